@@ -1,0 +1,95 @@
+#include "cli/RenderCommand.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include "geometry/FitCamera.h"
+#include "io/FrameFormats.h"
+#include "io/ModelLoader.h"
+#include "raster/Renderer.h"
+
+namespace termshade {
+namespace {
+
+int UsageError(const std::string& message) {
+  std::cerr << "termshade render: " << message << "\n";
+  return 2;
+}
+
+}  // namespace
+
+int RunRenderCommand(const RenderCommandOptions& options) {
+  // Step 1: options that the parser could not check alone.
+  const auto method = ParseMethod(options.method);
+  if (!method) return UsageError("--method must be zbuffer, painter, cull or wire");
+  const auto shade = ParseShadeMode(options.shade);
+  if (!shade) return UsageError("--shade must be contrast or lambert");
+  const auto format = ParseFrameFormat(options.format);
+  if (!format) return UsageError("--format must be text, ansi or json");
+  if (const auto problem = ShadeRamp::Problem(options.ramp)) return UsageError("--ramp: " + *problem);
+  if (!std::isfinite(options.theta) || !std::isfinite(options.phi) ||
+      !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {
+    return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
+  }
+
+  // Step 2: the model.
+  Loaded<Mesh> mesh = LoadModelFile(options.modelPath);
+  if (!mesh.Ok()) {
+    std::cerr << mesh.Error().ToString() << "\n";
+    return 1;
+  }
+  const Scene scene = PrepareScene(std::move(mesh.Value()));
+
+  // Step 3: the output stream.
+  std::ofstream file;
+  if (!options.outputPath.empty()) {
+    file.open(options.outputPath, std::ios::binary | std::ios::trunc);
+    if (!file) {
+      std::cerr << SanitizeForTerminal(options.outputPath) << ": cannot write\n";
+      return 1;
+    }
+  }
+  std::ostream& out = options.outputPath.empty() ? std::cout : file;
+
+  // Step 4: the frames, one after another.
+  RenderOptions renderOptions;
+  renderOptions.method = *method;
+  renderOptions.shade = *shade;
+  renderOptions.ramp = ShadeRamp(options.ramp);
+  renderOptions.cullBackFaces = !options.noCull;
+  ViewParams view = DefaultView(scene.diagonalModelUnits);
+  view.theta = options.theta;
+  view.phi = options.phi;
+  if (options.rho > 0.0) view.rho = options.rho;
+
+  Renderer renderer;
+  DepthBuffer depth;
+  CellBuffer cells;
+  depth.Resize(options.widthCells, options.heightCells);
+  cells.Resize(options.widthCells, options.heightCells);
+  std::string text;
+  for (int frame = 0; frame < options.frames; ++frame) {
+    ViewParams frameView = view;
+    frameView.theta = view.theta + frame * options.stepRadians;
+    const Camera camera = FitCamera(scene, frameView, options.widthCells, options.heightCells,
+                                    options.cellAspect);
+    renderer.Render(scene, camera, renderOptions, depth, cells);
+    text.clear();
+    if (*format == FrameFormat::kText) AppendTextFrame(cells, text);
+    if (*format == FrameFormat::kAnsi) AppendAnsiFrame(cells, renderOptions.ramp.LevelCount(), text);
+    if (*format == FrameFormat::kJson) {
+      AppendJsonFrame(cells, depth, scene, camera, renderOptions, text);
+    }
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  }
+  out.flush();
+  if (!out) {
+    std::cerr << "termshade render: writing the frames failed\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace termshade

@@ -1,0 +1,157 @@
+// termshade: the command-line front end (SPEC 9). Parses arguments and hands
+// over to the viewer, the headless renderer or the scene generator.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <exception>
+#include <iostream>
+#include <regex>
+
+#include "cli/GenerateCommand.h"
+#include "cli/RenderCommand.h"
+#include "tui/Viewer.h"
+
+namespace {
+
+using termshade::RenderCommandOptions;
+
+// CLI11's own exit codes are not ours: help is 0, every usage error 2.
+int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    done = true;
+    return 0;
+  } catch (const CLI::CallForAllHelp&) {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    done = true;
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "termshade: " << e.what() << "\nRun 'termshade --help' for the options.\n";
+    done = true;
+    return 2;
+  }
+  done = false;
+  return 0;
+}
+
+void AddSizeOption(CLI::App& command, RenderCommandOptions& options) {
+  command
+      .add_option_function<std::string>(
+          "--size",
+          [&options](const std::string& text) {
+            static const std::regex kSize("([0-9]{1,5})x([0-9]{1,5})");
+            std::smatch match;
+            if (!std::regex_match(text, match, kSize)) {
+              throw CLI::ValidationError("--size", "expected COLSxROWS, e.g. 80x24");
+            }
+            const int cols = std::stoi(match[1]), rows = std::stoi(match[2]);
+            if (cols < 1 || rows < 1 || cols > 4096 || rows > 2048) {
+              throw CLI::ValidationError("--size", "COLS must be 1..4096 and ROWS 1..2048");
+            }
+            options.widthCells = cols;
+            options.heightCells = rows;
+          },
+          "frame size in cells, COLSxROWS (default 80x24)")
+      ->type_name("COLSxROWS");
+}
+
+void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
+  AddSizeOption(command, options);
+  command.add_option("--cell-aspect", options.cellAspect, "cell height / cell width (default 2.0)")
+      ->check(CLI::Range(0.25, 8.0));
+  command.add_option("--theta", options.theta, "eye azimuth, radians (default 0.3)");
+  command.add_option("--phi", options.phi, "eye polar angle from +z, radians (default 1.3)");
+  command.add_option("--rho", options.rho,
+                     "eye distance, model units (default 3 x 0.6 x bounding-box diagonal)")
+      ->check(CLI::PositiveNumber);
+}
+
+void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
+  command.add_option("--method", options.method, "zbuffer (default), painter, cull or wire")
+      ->check(CLI::IsMember({"zbuffer", "painter", "cull", "wire"}));
+  command.add_option("--shade", options.shade, "contrast (default) or lambert")
+      ->check(CLI::IsMember({"contrast", "lambert"}));
+  command.add_option("--ramp", options.ramp, "shade characters from dark to bright (default .:-=+*#%@)");
+  command.add_flag("--no-cull", options.noCull, "draw back faces too (shaded from their back side)");
+}
+
+int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
+                  double cellAspectOption, bool mono) {
+  termshade::ViewerOptions viewer;
+  viewer.modelPaths = models;
+  if (cellAspectOption > 0.0) viewer.cellAspect = cellAspectOption;
+  viewer.monochrome = mono;
+  viewer.render.method = *termshade::ParseMethod(look.method);
+  viewer.render.shade = *termshade::ParseShadeMode(look.shade);
+  if (const auto problem = termshade::ShadeRamp::Problem(look.ramp)) {
+    std::cerr << "termshade: --ramp: " << *problem << "\n";
+    return 2;
+  }
+  viewer.render.ramp = termshade::ShadeRamp(look.ramp);
+  viewer.render.cullBackFaces = !look.noCull;
+  return termshade::RunViewer(viewer);
+}
+
+int Run(int argc, char** argv) {
+  CLI::App app{
+      "termshade: shaded 3D polygon models in a terminal.\n"
+      "With no command, opens the interactive viewer on MODEL files (the demo scene if none);\n"
+      "press ? in the viewer for its keys."};
+  app.set_help_all_flag("--help-all", "all commands' options");
+  app.require_subcommand(0, 1);
+
+  // The viewer: termshade [MODEL...]
+  RenderCommandOptions viewerLook;
+  std::vector<std::string> models;
+  double viewerAspect = 0.0;
+  bool mono = false;
+  app.add_option("models", models, "model files (.dat, or .obj .stl .ply .off ... via Assimp)");
+  app.add_option("--cell-aspect", viewerAspect,
+                 "cell height / cell width (default: from the terminal, else 2.0)")
+      ->check(CLI::Range(0.25, 8.0));
+  app.add_flag("--mono", mono, "no colour (also when NO_COLOR is set)");
+  AddLookOptions(app, viewerLook);
+
+  // Headless frames: termshade render MODEL [options]
+  RenderCommandOptions render;
+  CLI::App* renderCommand = app.add_subcommand("render", "render frames to stdout or a file");
+  renderCommand->add_option("model", render.modelPath, "model file")->required();
+  AddViewOptions(*renderCommand, render);
+  AddLookOptions(*renderCommand, render);
+  renderCommand->add_option("--format", render.format, "text (default), ansi or json")
+      ->check(CLI::IsMember({"text", "ansi", "json"}));
+  renderCommand->add_option("-o,--output", render.outputPath, "write to FILE instead of stdout");
+  renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
+      ->check(CLI::Range(1, 100000));
+  renderCommand->add_option("--step", render.stepRadians,
+                            "turntable: theta step between frames, radians (default 0.1)");
+
+  // Scene files: termshade generate NAME [-o FILE]
+  std::string sceneName, generateOutput;
+  CLI::App* generateCommand =
+      app.add_subcommand("generate", "write a shipped scene (data/*.dat) from its generator");
+  generateCommand->add_option("scene", sceneName, "scene name, or 'all' (with -o DIRECTORY)")
+      ->required();
+  generateCommand->add_option("-o,--output", generateOutput, "file (or directory for 'all')");
+
+  bool done = false;
+  const int parseCode = ParseOrExit(app, argc, argv, done);
+  if (done) return parseCode;
+  if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
+  if (generateCommand->parsed()) return termshade::RunGenerateCommand(sceneName, generateOutput);
+  return RunViewerFrom(viewerLook, models, viewerAspect, mono);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return Run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "termshade: internal error: " << e.what() << "\n";
+  } catch (...) {
+    std::cerr << "termshade: internal error\n";
+  }
+  return 3;
+}

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "geometry/Camera.h"
+#include "geometry/Scene.h"
+
+namespace termshade {
+
+/// The camera for a view of a scene in a widthCells x heightCells window. The
+/// projection is fitted once, at the scene's default distance, so orbiting
+/// never changes the model's size and a larger rho makes it smaller.
+Camera FitCamera(const Scene& scene, const ViewParams& view, int widthCells, int heightCells,
+                 double cellAspect);
+
+/// Like FitCamera, but fitted as if the eye were at distance fitRho (the
+/// viewer's "refit" passes the current distance).
+Camera FitCameraAt(const Scene& scene, const ViewParams& view, double fitRho, int widthCells,
+                   int heightCells, double cellAspect);
+
+}  // namespace termshade

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geometry/Vec3.h"
+
+namespace termshade {
+
+/// A polygon model as read from a file: vertices in file space, faces as
+/// counter-clockwise (seen from outside) lists of 0-based vertex indices.
+struct Mesh {
+  std::string name;
+  std::vector<Vec3> verticesFile;
+  /// Corners of all faces, face after face; faceStarts has FaceCount() + 1 entries.
+  std::vector<uint32_t> faceCorners;
+  std::vector<uint32_t> faceStarts{0};
+  /// Parallel to faceCorners: the edge from this corner to the next is not drawn as a line.
+  std::vector<uint8_t> edgeHidden;
+  /// Two-vertex entries of the file: line segments (drawn in wire mode only).
+  std::vector<std::array<uint32_t, 2>> segments;
+
+  size_t FaceCount() const { return faceStarts.size() - 1; }
+  std::span<const uint32_t> Face(size_t face) const {
+    return {faceCorners.data() + faceStarts[face], faceStarts[face + 1] - faceStarts[face]};
+  }
+  void AddFace(std::span<const uint32_t> corners, std::span<const uint8_t> hidden = {});
+};
+
+}  // namespace termshade

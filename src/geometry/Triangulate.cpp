@@ -1,0 +1,146 @@
+#include "geometry/Triangulate.h"
+
+#include <cmath>
+
+#include "geometry/FaceNormal.h"
+
+namespace termshade {
+namespace {
+
+struct Point2 {
+  double a = 0.0;
+  double b = 0.0;
+};
+
+double Orient(Point2 p, Point2 q, Point2 r) {
+  return (q.a - p.a) * (r.b - p.b) - (q.b - p.b) * (r.a - p.a);
+}
+
+bool SamePoint(Point2 p, Point2 q) { return p.a == q.a && p.b == q.b; }
+
+// True when p lies inside or on triangle (x, y, z), which is counter-clockwise.
+bool InsideOrOn(Point2 p, Point2 x, Point2 y, Point2 z) {
+  return Orient(x, y, p) >= 0.0 && Orient(y, z, p) >= 0.0 && Orient(z, x, p) >= 0.0;
+}
+
+// Projects onto the coordinate plane most nearly parallel to the polygon, with
+// the axes ordered so that the polygon is counter-clockwise in 2D.
+std::vector<Point2> ProjectToDominantPlane(std::span<const Vec3> corners,
+                                           const std::vector<uint32_t>& kept, Vec3 normal) {
+  const double ax = std::fabs(normal.x), ay = std::fabs(normal.y), az = std::fabs(normal.z);
+  std::vector<Point2> out;
+  out.reserve(kept.size());
+  for (uint32_t i : kept) {
+    const Vec3 p = corners[i];
+    if (az >= ax && az >= ay) {
+      out.push_back(normal.z > 0 ? Point2{p.x, p.y} : Point2{p.y, p.x});
+    } else if (ax >= ay) {
+      out.push_back(normal.x > 0 ? Point2{p.y, p.z} : Point2{p.z, p.y});
+    } else {
+      out.push_back(normal.y > 0 ? Point2{p.z, p.x} : Point2{p.x, p.z});
+    }
+  }
+  return out;
+}
+
+std::vector<uint32_t> DropConsecutiveDuplicates(std::span<const Vec3> corners) {
+  std::vector<uint32_t> kept;
+  for (uint32_t i = 0; i < corners.size(); ++i) {
+    if (!kept.empty() && corners[kept.back()] == corners[i]) continue;
+    kept.push_back(i);
+  }
+  while (kept.size() > 1 && corners[kept.back()] == corners[kept.front()]) kept.pop_back();
+  return kept;
+}
+
+class EarClipper {
+ public:
+  explicit EarClipper(std::vector<Point2> points) : points_(std::move(points)) {
+    const size_t n = points_.size();
+    next_.resize(n);
+    prev_.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      next_[i] = static_cast<uint32_t>((i + 1) % n);
+      prev_[i] = static_cast<uint32_t>((i + n - 1) % n);
+    }
+    remaining_ = n;
+  }
+
+  // Emits triangles of local (kept-list) indices.
+  template <typename Emit>
+  void Run(Emit emit) {
+    uint32_t start = 0;
+    while (remaining_ > 3) {
+      const uint32_t ear = FindEar(start);
+      emit(prev_[ear], ear, next_[ear]);
+      start = Unlink(ear);
+    }
+    emit(prev_[start], start, next_[start]);
+  }
+
+ private:
+  double Convexity(uint32_t i) const {
+    return Orient(points_[prev_[i]], points_[i], points_[next_[i]]);
+  }
+
+  bool IsEmpty(uint32_t i) const {
+    const uint32_t p = prev_[i], n = next_[i];
+    const Point2 x = points_[p], y = points_[i], z = points_[n];
+    for (uint32_t j = next_[n]; j != p; j = next_[j]) {
+      const Point2 q = points_[j];
+      if (SamePoint(q, x) || SamePoint(q, y) || SamePoint(q, z)) continue;
+      if (InsideOrOn(q, x, y, z)) return false;
+    }
+    return true;
+  }
+
+  // Step 1: a strictly convex empty ear; step 2: a collinear empty corner;
+  // step 3 (not a simple polygon): the most convex corner.
+  uint32_t FindEar(uint32_t start) const {
+    uint32_t i = start;
+    for (size_t k = 0; k < remaining_; ++k, i = next_[i]) {
+      if (Convexity(i) > 0.0 && IsEmpty(i)) return i;
+    }
+    for (size_t k = 0; k < remaining_; ++k, i = next_[i]) {
+      if (Convexity(i) == 0.0 && IsEmpty(i)) return i;
+    }
+    uint32_t best = start;
+    double bestConvexity = -INFINITY;
+    for (size_t k = 0; k < remaining_; ++k, i = next_[i]) {
+      const double c = Convexity(i);
+      if (c > bestConvexity || std::isnan(bestConvexity)) {
+        best = i;
+        bestConvexity = c;
+      }
+    }
+    return best;
+  }
+
+  uint32_t Unlink(uint32_t i) {
+    next_[prev_[i]] = next_[i];
+    prev_[next_[i]] = prev_[i];
+    --remaining_;
+    return prev_[i];
+  }
+
+  std::vector<Point2> points_;
+  std::vector<uint32_t> next_;
+  std::vector<uint32_t> prev_;
+  size_t remaining_ = 0;
+};
+
+}  // namespace
+
+void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangle>& trianglesOut) {
+  const std::vector<uint32_t> kept = DropConsecutiveDuplicates(corners);
+  if (kept.size() < 3) return;
+  Vec3 normal = NewellNormal(kept.size(), [&](size_t i) { return corners[kept[i]]; });
+  if (!IsFinite(normal)) return;
+  if (normal == Vec3{}) normal = {0, 0, 1};  // all collinear: any plane, triangles are empty
+  EarClipper clipper(ProjectToDominantPlane(corners, kept, normal));
+  clipper.Run([&](uint32_t a, uint32_t b, uint32_t c) {
+    trianglesOut.push_back({kept[a], kept[b], kept[c]});
+  });
+}
+
+}  // namespace termshade

@@ -1,0 +1,48 @@
+#include "raster/RenderOptions.h"
+
+#include <array>
+#include <utility>
+
+namespace termshade {
+namespace {
+
+constexpr std::array<std::pair<Method, std::string_view>, 4> kMethodNames{{
+    {Method::kZBuffer, "zbuffer"},
+    {Method::kPainter, "painter"},
+    {Method::kCull, "cull"},
+    {Method::kWire, "wire"},
+}};
+
+constexpr std::array<std::pair<ShadeMode, std::string_view>, 2> kShadeNames{{
+    {ShadeMode::kContrast, "contrast"},
+    {ShadeMode::kLambert, "lambert"},
+}};
+
+template <typename Enum, size_t N>
+std::string_view NameOf(const std::array<std::pair<Enum, std::string_view>, N>& table,
+                        Enum value) {
+  for (const auto& [candidate, name] : table) {
+    if (candidate == value) return name;
+  }
+  return "?";
+}
+
+template <typename Enum, size_t N>
+std::optional<Enum> ValueOf(const std::array<std::pair<Enum, std::string_view>, N>& table,
+                            std::string_view name) {
+  for (const auto& [candidate, candidateName] : table) {
+    if (candidateName == name) return candidate;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string_view MethodName(Method method) { return NameOf(kMethodNames, method); }
+std::optional<Method> ParseMethod(std::string_view name) { return ValueOf(kMethodNames, name); }
+std::string_view ShadeModeName(ShadeMode mode) { return NameOf(kShadeNames, mode); }
+std::optional<ShadeMode> ParseShadeMode(std::string_view name) {
+  return ValueOf(kShadeNames, name);
+}
+
+}  // namespace termshade

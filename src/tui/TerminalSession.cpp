@@ -1,0 +1,119 @@
+#include "tui/TerminalSession.h"
+
+#include <curses.h>
+#include <fcntl.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+
+namespace termshade {
+namespace {
+
+// The one piece of state a signal handler may touch: the pipe's write end.
+// NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables)
+std::atomic<int> gSignalWriteFd{-1};
+
+constexpr int kHandledSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
+extern "C" void OnTerminatingSignal(int signalNumber) {
+  const int fd = gSignalWriteFd.load();
+  if (fd >= 0) {
+    const auto byte = static_cast<char>(signalNumber);
+    [[maybe_unused]] const ssize_t written = write(fd, &byte, 1);
+  }
+}
+
+}  // namespace
+
+std::optional<std::string> TerminalProblem() {
+  const char* term = std::getenv("TERM");
+  if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+    return "the viewer needs a terminal (stdin and stdout are not both one)";
+  }
+  if (term == nullptr || *term == '\0' || std::strcmp(term, "dumb") == 0) {
+    return "the viewer needs a terminal that can move the cursor (TERM is unset or dumb)";
+  }
+  return std::nullopt;
+}
+
+TerminalSession::TerminalSession() {
+  if (pipe(signalPipe_) != 0) return;
+  for (int fd : signalPipe_) {
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
+    fcntl(fd, F_SETFD, FD_CLOEXEC);
+  }
+  // A short escape delay makes a lone Esc quick; ncurses reads it at newterm.
+  setenv("ESCDELAY", "25", 0);
+  SCREEN* screen = newterm(nullptr, stdout, stdin);
+  if (screen == nullptr) return;
+  screen_ = screen;
+  set_term(screen);
+  InstallSignalHandlers();
+  cbreak();
+  noecho();
+  nonl();
+  keypad(stdscr, TRUE);
+  nodelay(stdscr, TRUE);
+  curs_set(0);
+  mousemask(BUTTON1_PRESSED | BUTTON1_RELEASED | REPORT_MOUSE_POSITION | BUTTON4_PRESSED |
+                BUTTON5_PRESSED,
+            nullptr);
+  mouseinterval(0);
+  if (has_colors() && start_color() == OK) {
+    use_default_colors();
+    colours_ = true;
+    colours256_ = COLORS >= 256 && COLOR_PAIRS >= 64;
+  }
+}
+
+TerminalSession::~TerminalSession() {
+  if (screen_ != nullptr) {
+    mousemask(0, nullptr);
+    endwin();
+    delscreen(static_cast<SCREEN*>(screen_));
+    RestoreSignalHandlers();
+  }
+  gSignalWriteFd.store(-1);
+  for (int fd : signalPipe_) {
+    if (fd >= 0) close(fd);
+  }
+}
+
+void TerminalSession::InstallSignalHandlers() {
+  gSignalWriteFd.store(signalPipe_[1]);
+  struct sigaction action {};
+  action.sa_handler = OnTerminatingSignal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = 0;  // no SA_RESTART: a signal wakes the event loop's poll
+  for (int signalNumber : kHandledSignals) sigaction(signalNumber, &action, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);  // a dropped link shows up as a failed write, not a kill
+}
+
+void TerminalSession::RestoreSignalHandlers() {
+  for (int signalNumber : kHandledSignals) std::signal(signalNumber, SIG_DFL);
+}
+
+bool TerminalSession::TakeSignal() {
+  char buffer[16];
+  bool any = false;
+  while (read(signalPipe_[0], buffer, sizeof buffer) > 0) any = true;
+  return any;
+}
+
+double TerminalSession::ReportedCellAspect() {
+  winsize size{};
+  if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) != 0) return 0.0;
+  if (size.ws_xpixel == 0 || size.ws_ypixel == 0 || size.ws_col == 0 || size.ws_row == 0) {
+    return 0.0;
+  }
+  const double cellWidth = static_cast<double>(size.ws_xpixel) / size.ws_col;
+  const double cellHeight = static_cast<double>(size.ws_ypixel) / size.ws_row;
+  const double aspect = cellHeight / cellWidth;
+  return aspect >= 0.5 && aspect <= 4.0 ? aspect : 0.0;
+}
+
+}  // namespace termshade

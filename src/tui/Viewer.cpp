@@ -1,0 +1,251 @@
+#include "tui/Viewer.h"
+
+#include <curses.h>
+#include <poll.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <clocale>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "io/LoadError.h"
+#include "raster/Renderer.h"
+#include "tui/LineEditor.h"
+#include "tui/ScreenPainter.h"
+#include "tui/TerminalSession.h"
+#include "tui/ViewerState.h"
+
+namespace termshade {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kMinCols = 20;
+constexpr int kMinRows = 4;
+constexpr auto kTurntablePeriod = std::chrono::milliseconds(40);  // at most 25 frames a second
+
+std::optional<NamedKey> NamedKeyFor(int key) {
+  switch (key) {
+    case KEY_LEFT: return NamedKey::kLeft;
+    case KEY_RIGHT: return NamedKey::kRight;
+    case KEY_UP: return NamedKey::kUp;
+    case KEY_DOWN: return NamedKey::kDown;
+    case KEY_PPAGE: return NamedKey::kPageUp;
+    case KEY_NPAGE: return NamedKey::kPageDown;
+    case KEY_IC: return NamedKey::kInsert;
+    case KEY_DC: return NamedKey::kDelete;
+    case 27: return NamedKey::kEscape;
+    default: return std::nullopt;
+  }
+}
+
+class EventLoop {
+ public:
+  EventLoop(ViewerState& state, TerminalSession& session)
+      : state_(state), session_(session), painter_(session) {}
+
+  void Run() {
+    auto nextTurntableFrame = Clock::now();
+    while (!state_.QuitRequested()) {
+      if (dirty_) Draw();
+      // Step 1: sleep until input, a signal, or the next turntable frame.
+      int timeoutMs = -1;
+      if (state_.Turntable()) {
+        const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(
+            nextTurntableFrame - Clock::now());
+        timeoutMs = static_cast<int>(std::max<long long>(0, wait.count()));
+      }
+      pollfd fds[2] = {{STDIN_FILENO, POLLIN, 0}, {session_.SignalFd(), POLLIN, 0}};
+      poll(fds, 2, timeoutMs);
+      if (session_.TakeSignal()) return;
+      if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) return;  // terminal gone
+      // Step 2: every key that queued up while drawing, applied before one redraw.
+      for (int key = getch(); key != ERR; key = getch()) HandleKey(key);
+      // Step 3: the turntable, at a capped rate.
+      if (state_.Turntable() && Clock::now() >= nextTurntableFrame) {
+        state_.TurntableStep();
+        dirty_ = true;
+        nextTurntableFrame = std::max(nextTurntableFrame + kTurntablePeriod, Clock::now());
+      }
+    }
+  }
+
+ private:
+  void HandleKey(int key) {
+    if (prompting_) {
+      HandlePromptKey(key);
+      return;
+    }
+    if (key == KEY_RESIZE) {
+      dirty_ = true;
+      return;
+    }
+    if (state_.HelpShown()) {  // any key closes the help
+      state_.Apply(ViewerAction::kToggleHelp);
+      dirty_ = true;
+      return;
+    }
+    if (key == KEY_MOUSE) {
+      HandleMouse();
+      return;
+    }
+    ViewerAction action = ViewerAction::kNone;
+    if (const auto named = NamedKeyFor(key)) {
+      action = ActionForNamedKey(*named);
+      if (*named == NamedKey::kEscape && state_.LightMode()) action = ViewerAction::kToggleLightMode;
+    } else if (key >= 0 && key < 128) {
+      action = ActionForChar(key);
+    }
+    if (action == ViewerAction::kOpenFile) {
+      prompting_ = true;
+      editor_.Clear();
+    }
+    if (action != ViewerAction::kNone) {
+      state_.SetMessage("");
+      state_.Apply(action);
+      dirty_ = true;
+    }
+  }
+
+  void HandlePromptKey(int key) {
+    switch (key) {
+      case 27: prompting_ = false; break;
+      case '\r':
+      case '\n':
+      case KEY_ENTER:
+        prompting_ = false;
+        if (!editor_.Text().empty()) state_.OpenPath(editor_.Text());
+        break;
+      case KEY_BACKSPACE:
+      case 127:
+      case 8: editor_.Backspace(); break;
+      case KEY_DC: editor_.Delete(); break;
+      case KEY_LEFT: editor_.Left(); break;
+      case KEY_RIGHT: editor_.Right(); break;
+      case KEY_HOME:
+      case 1: editor_.Home(); break;
+      case KEY_END:
+      case 5: editor_.End(); break;
+      case 21: editor_.Clear(); break;
+      case KEY_RESIZE: break;
+      default:
+        if (key >= 0x20 && key < 0x7f) editor_.Insert(static_cast<char>(key));
+    }
+    dirty_ = true;
+  }
+
+  void HandleMouse() {
+    MEVENT event{};
+    if (getmouse(&event) != OK) return;
+    if ((event.bstate & BUTTON4_PRESSED) != 0) state_.Apply(ViewerAction::kCloser);
+    if ((event.bstate & BUTTON5_PRESSED) != 0) state_.Apply(ViewerAction::kFarther);
+    if ((event.bstate & BUTTON1_PRESSED) != 0) {
+      dragging_ = true;
+      dragCol_ = event.x;
+      dragRow_ = event.y;
+    } else if (dragging_ &&
+               (event.bstate & (REPORT_MOUSE_POSITION | BUTTON1_RELEASED)) != 0) {
+      state_.Drag(event.x - dragCol_, event.y - dragRow_);
+      dragCol_ = event.x;
+      dragRow_ = event.y;
+      if ((event.bstate & BUTTON1_RELEASED) != 0) dragging_ = false;
+    }
+    dirty_ = true;
+  }
+
+  void Draw() {
+    dirty_ = false;
+    const int cols = ScreenPainter::Cols(), rows = ScreenPainter::Rows();
+    if (cols < kMinCols || rows < kMinRows) {
+      painter_.PaintTooSmall();
+      painter_.Present();
+      return;
+    }
+    // Step 1: the frame, through the one shared pipeline.
+    const int frameRows = rows - 1;
+    cells_.Resize(cols, frameRows);
+    depth_.Resize(cols, frameRows);
+    const auto start = Clock::now();
+    const RenderStats stats =
+        renderer_.Render(state_.CurrentScene(), state_.CameraFor(cols, frameRows), state_.Render(),
+                         depth_, cells_);
+    const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    painter_.PaintFrame(cells_, state_.Render().ramp.LevelCount(), state_.Colour());
+    // Step 2: overlays and the status line.
+    if (state_.HelpShown()) painter_.PaintHelp();
+    if (prompting_) {
+      painter_.PaintPrompt("open: ", editor_);
+    } else {
+      painter_.HideCursor();
+      painter_.PaintStatus(StatusLeft(stats), StatusRight(frameMs));
+    }
+    painter_.Present();
+  }
+
+  std::string StatusLeft(const RenderStats& stats) const {
+    if (!state_.Message().empty()) return state_.Message();
+    if (state_.LightMode()) return "LIGHT: arrows move the sun, L or Esc to finish";
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, " | %d/%zu faces %d tris | %s %s%s",
+                  stats.facesVisible, state_.CurrentScene().FaceCount(), stats.trianglesDrawn,
+                  std::string(MethodName(state_.Render().method)).c_str(),
+                  std::string(ShadeModeName(state_.Render().shade)).c_str(),
+                  state_.Render().cullBackFaces ? "" : " 2-sided");
+    return state_.ModelLabel() + buffer;
+  }
+
+  std::string StatusRight(double frameMs) const {
+    const ViewParams& view = state_.View();
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer,
+                  "theta %.2f phi %.2f rho %.3g a %.2f %.2fms ?=help", view.theta, view.phi,
+                  view.rho, state_.CellAspect(), frameMs);
+    return buffer;
+  }
+
+  ViewerState& state_;
+  TerminalSession& session_;
+  ScreenPainter painter_;
+  Renderer renderer_;
+  CellBuffer cells_;
+  DepthBuffer depth_;
+  LineEditor editor_;
+  bool prompting_ = false;
+  bool dirty_ = true;
+  bool dragging_ = false;
+  int dragCol_ = 0;
+  int dragRow_ = 0;
+};
+
+}  // namespace
+
+int RunViewer(const ViewerOptions& options) {
+  if (const auto problem = TerminalProblem()) {
+    std::cerr << "termshade: " << *problem
+              << ".\nFor frames without a terminal use: termshade render MODEL [options]\n";
+    return 2;
+  }
+  ViewerOptions effective = options;
+  const char* noColour = std::getenv("NO_COLOR");
+  if (noColour != nullptr && *noColour != '\0') effective.monochrome = true;
+  ViewerState state(effective, TerminalSession::ReportedCellAspect());
+  if (const auto error = state.LoadFirst()) {
+    std::cerr << error->ToString() << "\n";
+    return 1;
+  }
+  std::setlocale(LC_ALL, "");
+  TerminalSession session;
+  if (!session.Ok()) {
+    std::cerr << "termshade: cannot start the terminal interface for TERM="
+              << SanitizeForTerminal(std::getenv("TERM") != nullptr ? std::getenv("TERM") : "")
+              << "\n";
+    return 2;
+  }
+  EventLoop loop(state, session);
+  loop.Run();
+  return 0;
+}
+
+}  // namespace termshade

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "raster/RenderOptions.h"
+
+namespace termshade {
+
+/// Options of the interactive viewer (`termshade [MODEL...]`).
+struct ViewerOptions {
+  std::vector<std::string> modelPaths;  ///< empty: the embedded demo scene
+  std::optional<double> cellAspect;     ///< unset: from the terminal, else 2.0
+  bool monochrome = false;
+  RenderOptions render;
+};
+
+/// Runs the full-screen viewer until the user quits; returns the exit code.
+/// Restores the terminal on every path, signals included.
+int RunViewer(const ViewerOptions& options);
+
+}  // namespace termshade

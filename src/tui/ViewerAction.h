@@ -1,0 +1,36 @@
+#pragma once
+
+namespace termshade {
+
+/// What a key press or mouse event asks of the viewer, independent of ncurses.
+enum class ViewerAction {
+  kNone,
+  kOrbitLeft,
+  kOrbitRight,
+  kOrbitUp,
+  kOrbitDown,
+  kCloser,
+  kFarther,
+  kResetView,
+  kRefit,
+  kCycleMethod,
+  kCycleShade,
+  kToggleColour,
+  kToggleLightMode,
+  kToggleTurntable,
+  kToggleCulling,
+  kOpenFile,
+  kNextModel,
+  kPreviousModel,
+  kToggleHelp,
+  kAspectDown,
+  kAspectUp,
+  kQuit,
+};
+
+/// Maps a key (an ASCII code, or one of the named keys below) to its action.
+enum class NamedKey { kLeft, kRight, kUp, kDown, kPageUp, kPageDown, kInsert, kDelete, kEscape };
+ViewerAction ActionForChar(int ascii);
+ViewerAction ActionForNamedKey(NamedKey key);
+
+}  // namespace termshade

@@ -1,0 +1,142 @@
+#include "tui/ViewerState.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geometry/FitCamera.h"
+#include "io/DatReader.h"
+#include "io/DemoScene.h"
+#include "io/ModelLoader.h"
+
+namespace termshade {
+
+Loaded<Scene> LoadViewerScene(const std::string& path) {
+  Loaded<Mesh> mesh = path.empty() ? ParseDat(DemoSceneText(), std::string(kDemoSceneName))
+                                   : LoadModelFile(path);
+  if (!mesh.Ok()) return mesh.Error();
+  return PrepareScene(std::move(mesh.Value()));
+}
+
+ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
+    : paths_(options.modelPaths), render_(options.render), colour_(!options.monochrome) {
+  if (paths_.empty()) paths_.emplace_back();
+  cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
+}
+
+std::optional<LoadError> ViewerState::LoadFirst() {
+  Loaded<Scene> scene = LoadViewerScene(paths_.front());
+  if (!scene.Ok()) return scene.Error();
+  scene_ = std::move(scene.Value());
+  current_ = 0;
+  ResetView();
+  return std::nullopt;
+}
+
+void ViewerState::OpenPath(const std::string& path) {
+  Loaded<Scene> scene = LoadViewerScene(path);
+  if (!scene.Ok()) {
+    message_ = scene.Error().ToString();
+    return;
+  }
+  paths_.insert(paths_.begin() + static_cast<std::ptrdiff_t>(current_ + 1), path);
+  current_ += 1;
+  scene_ = std::move(scene.Value());
+  ResetView();
+  message_ = "opened " + ModelLabel();
+}
+
+void ViewerState::SwitchTo(size_t index) {
+  if (index == current_) return;
+  Loaded<Scene> scene = LoadViewerScene(paths_[index]);
+  if (!scene.Ok()) {
+    message_ = scene.Error().ToString();
+    return;
+  }
+  current_ = index;
+  scene_ = std::move(scene.Value());
+  ResetView();
+  message_.clear();
+}
+
+void ViewerState::ResetView() {
+  view_ = DefaultView(scene_.diagonalModelUnits);
+  fitRho_ = view_.rho;
+  sunAzimuth_ = sunElevation_ = 0.0;
+  render_.sunEye = SunFromAngles(0.0, 0.0);
+}
+
+void ViewerState::Orbit(double dTheta, double dPhi) {
+  if (lightMode_) {
+    sunAzimuth_ += dTheta;
+    sunElevation_ += dPhi;
+    render_.sunEye = SunFromAngles(sunAzimuth_, sunElevation_);
+    return;
+  }
+  view_.theta += dTheta;
+  view_.phi = std::clamp(view_.phi + dPhi, 0.0, std::numbers::pi);
+}
+
+void ViewerState::ChangeDistance(double factor) {
+  const ViewLimits limits = LimitsForDiagonal(scene_.diagonalModelUnits);
+  view_.rho = std::clamp(view_.rho * factor, limits.rhoMin, limits.rhoMax);
+}
+
+void ViewerState::Apply(ViewerAction action) {
+  switch (action) {
+    case ViewerAction::kNone: break;
+    case ViewerAction::kOrbitLeft: Orbit(-kOrbitStepRadians, 0.0); break;
+    case ViewerAction::kOrbitRight: Orbit(kOrbitStepRadians, 0.0); break;
+    case ViewerAction::kOrbitUp: Orbit(0.0, -kOrbitStepRadians); break;
+    case ViewerAction::kOrbitDown: Orbit(0.0, kOrbitStepRadians); break;
+    case ViewerAction::kCloser: ChangeDistance(0.5); break;
+    case ViewerAction::kFarther: ChangeDistance(2.0); break;
+    case ViewerAction::kResetView: ResetView(); break;
+    case ViewerAction::kRefit: fitRho_ = view_.rho; break;
+    case ViewerAction::kCycleMethod: {
+      static constexpr Method kOrder[] = {Method::kZBuffer, Method::kPainter, Method::kCull,
+                                          Method::kWire};
+      const auto at = std::find(std::begin(kOrder), std::end(kOrder), render_.method);
+      render_.method = at + 1 == std::end(kOrder) ? kOrder[0] : *(at + 1);
+      break;
+    }
+    case ViewerAction::kCycleShade:
+      render_.shade =
+          render_.shade == ShadeMode::kContrast ? ShadeMode::kLambert : ShadeMode::kContrast;
+      break;
+    case ViewerAction::kToggleColour: colour_ = !colour_; break;
+    case ViewerAction::kToggleLightMode: lightMode_ = !lightMode_; break;
+    case ViewerAction::kToggleTurntable: turntable_ = !turntable_; break;
+    case ViewerAction::kToggleCulling: render_.cullBackFaces = !render_.cullBackFaces; break;
+    case ViewerAction::kOpenFile: break;  // the event loop owns the prompt
+    case ViewerAction::kNextModel: SwitchTo((current_ + 1) % paths_.size()); break;
+    case ViewerAction::kPreviousModel:
+      SwitchTo((current_ + paths_.size() - 1) % paths_.size());
+      break;
+    case ViewerAction::kToggleHelp: help_ = !help_; break;
+    case ViewerAction::kAspectDown: cellAspect_ = std::max(0.5, cellAspect_ - kAspectStep); break;
+    case ViewerAction::kAspectUp: cellAspect_ = std::min(4.0, cellAspect_ + kAspectStep); break;
+    case ViewerAction::kQuit: quit_ = true; break;
+  }
+}
+
+void ViewerState::Drag(int deltaCols, int deltaRows) {
+  Orbit(-kOrbitStepRadians * deltaCols, -0.5 * kOrbitStepRadians * deltaRows * cellAspect_);
+}
+
+void ViewerState::TurntableStep() { view_.theta += kTurntableStepRadians; }
+
+Camera ViewerState::CameraFor(int widthCells, int heightCells) const {
+  return FitCameraAt(scene_, view_, fitRho_, widthCells, heightCells, cellAspect_);
+}
+
+std::string ViewerState::ModelLabel() const {
+  const std::string& path = paths_[current_];
+  std::string label = path.empty() ? std::string(kDemoSceneName) : path;
+  if (paths_.size() > 1) {
+    label += " [" + std::to_string(current_ + 1) + "/" + std::to_string(paths_.size()) + "]";
+  }
+  return SanitizeForTerminal(label, 60);
+}
+
+}  // namespace termshade

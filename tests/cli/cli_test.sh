@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Exit codes and messages of the real binary (SPEC 9): 0 ok, 1 bad input, 2 bad usage.
+# Usage: cli_test.sh path/to/termshade source-dir
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+check() {  # check NAME EXPECTED_CODE EXPECTED_STDERR_SUBSTRING -- command...
+  local name=$1 want=$2 message=$3
+  shift 4
+  "$@" >"$work/out" 2>"$work/err" </dev/null
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL $name: exit $got, expected $want; stderr: $(head -c 400 "$work/err")"
+    failed=$((failed + 1))
+  elif [ -n "$message" ] && ! grep -qF -- "$message" "$work/err"; then
+    echo "FAIL $name: stderr lacks '$message'; it was: $(head -c 400 "$work/err")"
+    failed=$((failed + 1))
+  else
+    passed=$((passed + 1))
+  fi
+}
+
+expect() {  # expect NAME CONDITION-COMMAND...
+  local name=$1
+  shift
+  if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
+}
+
+# Good runs.
+check render_ok 0 "" -- "$bin" render "$src/data/cube.dat"
+expect render_is_24_lines_of_80 test "$(awk 'length($0) == 80' "$work/out" | wc -l)" -eq 24
+check render_without_term 0 "" -- env -u TERM "$bin" render "$src/data/wedge.dat" --size 40x12
+expect render_without_term_size test "$(wc -l <"$work/out")" -eq 12
+check help 0 "" -- "$bin" --help
+expect help_lists_render grep -q "render" "$work/out"
+check render_help 0 "" -- "$bin" render --help
+for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --format --frames --step --output --no-cull; do
+  expect "render_help_documents_$option" grep -q -- "$option" "$work/out"
+done
+check turntable 0 "" -- "$bin" render "$src/data/cube.dat" --frames 3 --step 0.5 --size 20x10
+expect turntable_has_three_frames test "$(wc -l <"$work/out")" -eq 30
+check output_file 0 "" -- "$bin" render "$src/data/cube.dat" -o "$work/frame.txt"
+expect output_file_written test "$(wc -l <"$work/frame.txt")" -eq 24
+check json 0 "" -- "$bin" render "$src/data/beams.dat" --format json --size 30x10
+expect json_has_schema grep -q '"format": "termshade-frame/1"' "$work/out"
+check ansi 0 "" -- "$bin" render "$src/data/cube.dat" --format ansi --size 30x10
+expect ansi_has_sgr grep -q $'\x1b\\[38;5;' "$work/out"
+check generate 0 "" -- "$bin" generate wedge
+expect generate_matches_data cmp -s "$work/out" "$src/data/wedge.dat"
+check obj_import 0 "" -- "$bin" render "$src/tests/models/good/quad_and_triangle.obj" --size 20x8
+
+# Bad input: exit 1 with file:line:col.
+check missing_file 1 "nope.dat: cannot open: No such file or directory" -- "$bin" render "$work/nope.dat"
+check malformed_file 1 "undefined_vertex.dat:14:7: vertex 12 is not defined (highest is 9)" -- \
+  "$bin" render "$src/tests/models/bad/undefined_vertex.dat"
+check directory_as_model 1 "" -- "$bin" render "$src"
+check unwritable_output 1 "cannot write" -- "$bin" render "$src/data/cube.dat" -o /nonexistent/dir/f.txt
+printf '1 0 0 0\nFaces:\n' >"$work/$(printf 'evil\033[31mname').dat"
+check escape_in_file_name 1 "" -- "$bin" render "$work/$(printf 'evil\033[31mname').dat.missing"
+expect escape_never_reaches_stderr bash -c "! grep -q $'\x1b' '$work/err'"
+expect escape_shown_escaped grep -qF 'evil\x1B[31mname' "$work/err"
+
+# Bad usage: exit 2.
+check unknown_method 2 "--method" -- "$bin" render "$src/data/cube.dat" --method foo
+check bad_size 2 "--size" -- "$bin" render "$src/data/cube.dat" --size 0x5
+check bad_size_text 2 "--size" -- "$bin" render "$src/data/cube.dat" --size big
+check bad_aspect 2 "--cell-aspect" -- "$bin" render "$src/data/cube.dat" --cell-aspect 0
+check bad_rho 2 "--rho" -- "$bin" render "$src/data/cube.dat" --rho -3
+check blank_ramp 2 "blank" -- "$bin" render "$src/data/cube.dat" --ramp ' .:'
+check unknown_option 2 "" -- "$bin" render "$src/data/cube.dat" --frobnicate
+check missing_model 2 "model" -- "$bin" render
+check unknown_scene 2 "unknown scene" -- "$bin" generate nothing
+check viewer_needs_terminal 2 "termshade render" -- "$bin" "$src/data/cube.dat"
+check viewer_dumb_terminal 2 "termshade render" -- env TERM=dumb "$bin"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

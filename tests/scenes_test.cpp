@@ -1,0 +1,70 @@
+// The shipped scenes are what their comments in data/README.md say.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "support/TestSupport.h"
+
+namespace termshade {
+namespace {
+
+// Signed volume by the divergence theorem: positive when faces wind
+// counter-clockwise seen from outside.
+double SignedVolume(const Scene& scene) {
+  double volume = 0.0;
+  for (const SceneTriangle& t : scene.triangles) {
+    const Vec3 a = scene.verticesWorld[t.vertices[0]], b = scene.verticesWorld[t.vertices[1]],
+               c = scene.verticesWorld[t.vertices[2]];
+    volume += Dot(a, Cross(b, c)) / 6.0;
+  }
+  return volume;
+}
+
+// Closed and consistently oriented: every directed edge has its reverse exactly once.
+bool IsClosedManifold(const Scene& scene) {
+  std::map<std::pair<uint32_t, uint32_t>, int> directed;
+  for (size_t f = 0; f < scene.FaceCount(); ++f) {
+    const auto face = scene.mesh.Face(f);
+    for (size_t i = 0; i < face.size(); ++i) ++directed[{face[i], face[(i + 1) % face.size()]}];
+  }
+  for (const auto& [edge, count] : directed) {
+    const auto reverse = directed.find({edge.second, edge.first});
+    if (count != 1 || reverse == directed.end() || reverse->second != 1) return false;
+  }
+  return true;
+}
+
+TEST(Scenes, SolidsAreClosedAndFaceOutwards) {
+  for (const char* name : {"cube", "wedge", "letter_l", "beams", "sphere_cone", "steps"}) {
+    const Scene scene = test::LoadScene(std::string("data/") + name + ".dat");
+    EXPECT_TRUE(IsClosedManifold(scene)) << name;
+    EXPECT_GT(SignedVolume(scene), 0.0) << name;
+  }
+}
+
+TEST(Scenes, SizesAreAsDocumented) {
+  const Scene sphereCone = test::LoadScene("data/sphere_cone.dat");
+  EXPECT_NEAR(static_cast<double>(sphereCone.verticesWorld.size()), 1800, 50);
+  EXPECT_NEAR(static_cast<double>(sphereCone.FaceCount()), 1900, 50);
+  EXPECT_DOUBLE_EQ(SignedVolume(test::LoadScene("data/cube.dat")), 1.0);
+  EXPECT_DOUBLE_EQ(SignedVolume(test::LoadScene("data/wedge.dat")), 7.5);
+}
+
+TEST(Scenes, FunctionSurfaceIsTwoSided) {
+  const Scene surface = test::LoadScene("data/surface.dat");
+  ASSERT_EQ(surface.FaceCount() % 2, 0U);
+  for (size_t f = 0; f + 1 < surface.FaceCount(); f += 2) {
+    const Vec3 n = surface.faceNormalsWorld[f], m = surface.faceNormalsWorld[f + 1];
+    EXPECT_NEAR(Dot(n, m), -1.0, 1e-12);
+  }
+  EXPECT_NEAR(SignedVolume(surface), 0.0, 1e-9);
+}
+
+TEST(Scenes, NonConvexFacesTriangulateToNMinusTwo) {
+  const Scene letter = test::LoadScene("data/letter_l.dat");
+  // Two L hexagons (4 triangles each) and six side quads (2 each).
+  EXPECT_EQ(letter.triangles.size(), 2U * 4U + 6U * 2U);
+}
+
+}  // namespace
+}  // namespace termshade

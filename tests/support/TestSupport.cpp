@@ -1,0 +1,56 @@
+#include "support/TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "geometry/FitCamera.h"
+#include "io/FrameFormats.h"
+#include "io/ModelLoader.h"
+#include "raster/Renderer.h"
+
+namespace termshade::test {
+
+std::string SourcePath(const std::string& relative) {
+  return std::string(TERMSHADE_SOURCE_DIR) + "/" + relative;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Scene LoadScene(const std::string& relative) {
+  Loaded<Mesh> mesh = LoadModelFile(SourcePath(relative));
+  if (!mesh.Ok()) {
+    ADD_FAILURE() << mesh.Error().ToString();
+    return PrepareScene(Mesh{});
+  }
+  return PrepareScene(std::move(mesh.Value()));
+}
+
+std::string Frame::Text() const {
+  std::string text;
+  AppendTextFrame(cells, text);
+  return text;
+}
+
+Frame RenderFrame(const Scene& scene, double theta, double phi, int widthCells, int heightCells,
+                  const RenderOptions& options, double rho, double cellAspect) {
+  ViewParams view = DefaultView(scene.diagonalModelUnits);
+  view.theta = theta;
+  view.phi = phi;
+  if (rho > 0.0) view.rho = rho;
+  Frame frame;
+  frame.camera = FitCamera(scene, view, widthCells, heightCells, cellAspect);
+  frame.cells.Resize(widthCells, heightCells);
+  frame.depth.Resize(widthCells, heightCells);
+  Renderer renderer;
+  renderer.Render(scene, frame.camera, options, frame.depth, frame.cells);
+  return frame;
+}
+
+}  // namespace termshade::test

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+
+#include "geometry/Camera.h"
+#include "geometry/Scene.h"
+#include "raster/CellBuffer.h"
+#include "raster/DepthBuffer.h"
+#include "raster/RenderOptions.h"
+
+namespace termshade::test {
+
+/// Absolute path of a file in the source tree.
+std::string SourcePath(const std::string& relative);
+
+/// Reads a whole file (empty string if it cannot be read).
+std::string ReadFile(const std::string& path);
+
+/// Loads and prepares a model from the source tree; fails the test on error.
+Scene LoadScene(const std::string& relative);
+
+/// A rendered frame with its camera.
+struct Frame {
+  Camera camera;
+  CellBuffer cells;
+  DepthBuffer depth;
+  std::string Text() const;
+};
+
+/// Renders a scene as `termshade render` would (default distance when rho <= 0).
+Frame RenderFrame(const Scene& scene, double theta, double phi, int widthCells, int heightCells,
+                  const RenderOptions& options, double rho = 0.0, double cellAspect = 2.0);
+
+}  // namespace termshade::test
