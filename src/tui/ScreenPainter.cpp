@@ -64,16 +64,11 @@ void ScreenPainter::PaintFrame(const CellBuffer& cells, int levelCount, bool col
   }
 }
 
-void ScreenPainter::PaintStatus(const std::string& left, const std::string& right) {
+void ScreenPainter::PaintStatus(const std::string& text) {
   const int row = LINES - 1, width = COLS;
-  const std::string leftSafe = SanitizeForTerminal(left, 512);
-  const std::string rightSafe = SanitizeForTerminal(right, 512);
   attrset(A_REVERSE);
   mvhline(row, 0, ' ', width);
-  // The right part (the view) wins; the left part is cut to what is left.
-  const int rightWidth = std::min(width, static_cast<int>(rightSafe.size()));
-  PutClipped(row, 0, leftSafe, width - rightWidth - 1);
-  PutClipped(row, width - rightWidth, rightSafe, rightWidth);
+  PutClipped(row, 0, SanitizeForTerminal(text, 4096), width);
   attrset(A_NORMAL);
 }
 

@@ -20,8 +20,8 @@ class ScreenPainter {
   static int Rows();
 
   void PaintFrame(const CellBuffer& cells, int levelCount, bool colour);
-  /// The bottom row: left text, right text flush right (both sanitized, cut to fit).
-  void PaintStatus(const std::string& left, const std::string& right);
+  /// The bottom row, in reverse video; the text is sanitized and cut to fit.
+  void PaintStatus(const std::string& text);
   void PaintPrompt(const std::string& label, const LineEditor& editor);
   void PaintHelp();
   void PaintTooSmall();

@@ -14,6 +14,7 @@
 #include "raster/Renderer.h"
 #include "tui/LineEditor.h"
 #include "tui/ScreenPainter.h"
+#include "tui/StatusLine.h"
 #include "tui/TerminalSession.h"
 #include "tui/ViewerState.h"
 
@@ -179,30 +180,35 @@ class EventLoop {
       painter_.PaintPrompt("open: ", editor_);
     } else {
       painter_.HideCursor();
-      painter_.PaintStatus(StatusLeft(stats), StatusRight(frameMs));
+      painter_.PaintStatus(StatusText(stats, frameMs, cols));
     }
     painter_.Present();
   }
 
-  std::string StatusLeft(const RenderStats& stats) const {
-    if (!state_.Message().empty()) return state_.Message();
-    if (state_.LightMode()) return "LIGHT: arrows move the sun, L or Esc to finish";
-    char buffer[160];
-    std::snprintf(buffer, sizeof buffer, " | %d/%zu faces %d tris | %s %s%s",
-                  stats.facesVisible, state_.CurrentScene().FaceCount(), stats.trianglesDrawn,
-                  std::string(MethodName(state_.Render().method)).c_str(),
-                  std::string(ShadeModeName(state_.Render().shade)).c_str(),
-                  state_.Render().cullBackFaces ? "" : " 2-sided");
-    return state_.ModelLabel() + buffer;
-  }
-
-  std::string StatusRight(double frameMs) const {
+  // The status line, most important first: the message or model, the view,
+  // the help hint, the method, what was drawn, the frame time.
+  std::string StatusText(const RenderStats& stats, double frameMs, int cols) const {
     const ViewParams& view = state_.View();
-    char buffer[160];
-    std::snprintf(buffer, sizeof buffer,
-                  "theta %.2f phi %.2f rho %.3g a %.2f %.2fms ?=help", view.theta, view.phi,
-                  view.rho, state_.CellAspect(), frameMs);
-    return buffer;
+    const RenderOptions& render = state_.Render();
+    char viewText[96], drawnText[96], timeText[32];
+    std::snprintf(viewText, sizeof viewText, "theta %.2f phi %.2f rho %.3g", view.theta, view.phi,
+                  view.rho);
+    std::snprintf(drawnText, sizeof drawnText, "%d/%zu faces %d tris", stats.facesVisible,
+                  state_.CurrentScene().FaceCount(), stats.trianglesDrawn);
+    std::snprintf(timeText, sizeof timeText, "%.2f ms", frameMs);
+    std::string lead = state_.Message();
+    if (lead.empty()) lead = state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends"
+                                                : state_.ModelLabel();
+    const std::string method = std::string(MethodName(render.method)) + " " +
+                               std::string(ShadeModeName(render.shade)) +
+                               (render.cullBackFaces ? "" : " 2-sided");
+    return ComposeStatusLine({{SanitizeForTerminal(lead, 512), 0, false},
+                              {method, 3, false},
+                              {drawnText, 4, false},
+                              {viewText, 1, true},
+                              {timeText, 5, true},
+                              {"? help", 2, true}},
+                             cols);
   }
 
   ViewerState& state_;

@@ -10,6 +10,16 @@
 #include "io/ModelLoader.h"
 
 namespace termshade {
+namespace {
+
+// The status line has one row: name the file by its last path component.
+std::string StatusLineError(LoadError error) {
+  const size_t slash = error.file.find_last_of('/');
+  if (slash != std::string::npos) error.file = error.file.substr(slash + 1);
+  return error.ToString();
+}
+
+}  // namespace
 
 Loaded<Scene> LoadViewerScene(const std::string& path) {
   Loaded<Mesh> mesh = path.empty() ? ParseDat(DemoSceneText(), std::string(kDemoSceneName))
@@ -36,7 +46,7 @@ std::optional<LoadError> ViewerState::LoadFirst() {
 void ViewerState::OpenPath(const std::string& path) {
   Loaded<Scene> scene = LoadViewerScene(path);
   if (!scene.Ok()) {
-    message_ = scene.Error().ToString();
+    message_ = StatusLineError(scene.Error());
     return;
   }
   paths_.insert(paths_.begin() + static_cast<std::ptrdiff_t>(current_ + 1), path);
@@ -50,7 +60,7 @@ void ViewerState::SwitchTo(size_t index) {
   if (index == current_) return;
   Loaded<Scene> scene = LoadViewerScene(paths_[index]);
   if (!scene.Ok()) {
-    message_ = scene.Error().ToString();
+    message_ = StatusLineError(scene.Error());
     return;
   }
   current_ = index;

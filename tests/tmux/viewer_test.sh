@@ -1,0 +1,159 @@
+#!/usr/bin/env bash
+# Drives the real viewer in tmux: send-keys in, capture-pane out.
+# Usage: viewer_test.sh path/to/termshade source-dir
+set -u
+bin=$(realpath "$1")
+src=$(realpath "$2")
+socket="termshade-test-$$"
+work=$(mktemp -d)
+passed=0
+failed=0
+
+tm() { tmux -L "$socket" -f /dev/null "$@"; }
+cleanup() { tm kill-server 2>/dev/null; sleep 0.2; rm -rf "$work"; }
+trap cleanup EXIT
+
+pass() { passed=$((passed + 1)); }
+fail() { echo "FAIL $1"; failed=$((failed + 1)); }
+
+# A pane running an interactive shell (so exit and terminal state can be seen).
+start_shell() {  # start_shell COLS ROWS
+  tm kill-server 2>/dev/null
+  tm new-session -d -s v -x "$1" -y "$2" "env -i PATH=$PATH HOME=$work TERM=tmux-256color PS1='$ ' bash --norc --noprofile"
+  tm set-option -t v status off >/dev/null
+  wait_for '\$ ' 5 >/dev/null
+}
+
+screen() { tm capture-pane -t v -p; }
+
+wait_for() {  # wait_for REGEX SECONDS: until the screen matches
+  local deadline=$((SECONDS + $2))
+  while [ $SECONDS -le "$deadline" ]; do
+    if screen | grep -qE -- "$1"; then return 0; fi
+    sleep 0.1
+  done
+  screen
+  return 1
+}
+
+# Waits until the screen stops changing (the viewer drew its frame).
+settle() {
+  local previous="" current
+  for _ in $(seq 1 50); do
+    sleep 0.1
+    current=$(screen)
+    [ "$current" = "$previous" ] && return 0
+    previous=$current
+  done
+}
+
+frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line == render
+  local name=$1 rows=$2
+  shift 2
+  settle
+  screen | head -n "$rows" | sed 's/[[:space:]]*$//' >"$work/screen.txt"
+  "$bin" render "$@" | sed 's/[[:space:]]*$//' >"$work/render.txt"
+  if cmp -s "$work/screen.txt" "$work/render.txt"; then pass; else
+    fail "$name: screen differs from 'termshade render $*'"
+    diff "$work/screen.txt" "$work/render.txt" | head -20
+  fi
+}
+
+run() { tm send-keys -t v -l -- "$1"; tm send-keys -t v Enter; }
+
+# 1. The first screen is the headless render of the same view and size.
+start_shell 80 25
+run "$bin"
+wait_for '\? help' 5 >/dev/null || fail "demo did not start"
+frame_matches_render first_screen_is_render 24 "$src/data/sphere_cone.dat" --size 80x24
+
+# 2. Arrows change the view exactly as theta/phi do.
+tm send-keys -t v Right Right Up
+wait_for 'theta 0\.50 phi 1\.20' 5 >/dev/null || fail "arrows did not move theta/phi"
+frame_matches_render arrows_match_render 24 "$src/data/sphere_cone.dat" --size 80x24 --theta 0.5 --phi 1.2
+tm send-keys -t v h k k
+wait_for 'theta 0\.40 phi 1\.00' 5 >/dev/null && pass || fail "vim keys did not orbit"
+
+# 3. Method and distance keys match render's options.
+tm send-keys -t v m
+wait_for 'painter' 5 >/dev/null || fail "m did not switch to painter"
+frame_matches_render method_key_matches_render 24 "$src/data/sphere_cone.dat" --size 80x24 --theta 0.4 --phi 1.0 --method painter
+tm send-keys -t v m m m -
+wait_for 'rho 19\.7' 5 >/dev/null || fail "- did not double rho"
+default_rho=$("$bin" render "$src/data/sphere_cone.dat" --format json --size 4x2 |
+  python3 -c 'import json, sys; print(repr(json.load(sys.stdin)["camera"]["rho"]))')
+doubled_rho=$(python3 -c "print(repr(2 * $default_rho))")
+frame_matches_render distance_key_matches_render 24 "$src/data/sphere_cone.dat" --size 80x24 --theta 0.4 --phi 1.0 --rho "$doubled_rho"
+tm send-keys -t v r
+wait_for 'theta 0\.30 phi 1\.30 rho 9\.85' 5 >/dev/null && pass || fail "r did not reset"
+
+# 4. Resizing re-renders at the new size.
+tm resize-window -t v -x 100 -y 31
+wait_for 'theta 0\.30' 5 >/dev/null
+frame_matches_render resize_rerenders 30 "$src/data/sphere_cone.dat" --size 100x30
+
+# 5. A terminal too small for a frame gets a message, then recovers.
+tm resize-window -t v -x 12 -y 3
+wait_for 'terminal too' 5 >/dev/null && pass || fail "no too-small message"
+tm resize-window -t v -x 80 -y 25
+frame_matches_render recovers_after_too_small 24 "$src/data/sphere_cone.dat" --size 80x24
+
+# 6. A bad path typed at 'o' shows an error and keeps the model.
+tm send-keys -t v o
+tm send-keys -t v -l "$src/tests/models/bad/undefined_vertex.dat"
+tm send-keys -t v Enter
+wait_for 'undefined_vertex.dat:14:7: vertex 12 is not defined' 5 >/dev/null && pass || fail "open error not shown"
+frame_matches_render model_kept_after_bad_open 24 "$src/data/sphere_cone.dat" --size 80x24
+
+# 7. A good path typed at 'o' opens it; n and p step between models.
+tm send-keys -t v o
+tm send-keys -t v -l "$src/data/cube.dat"
+tm send-keys -t v Enter
+wait_for 'opened' 5 >/dev/null || fail "open of a good file failed"
+frame_matches_render opened_model_shown 24 "$src/data/cube.dat" --size 80x24
+tm send-keys -t v p
+wait_for 'demo' 5 >/dev/null && pass || fail "p did not go back to the demo"
+
+# 8. q exits and leaves the shell usable (echo on, canonical input).
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null || fail "q did not return to the shell"
+run "stty -a | tr ' ' '\n' | grep -xE 'echo|icanon' | tr '\n' ' '; echo; echo done-\$((6*7))"
+wait_for '^(icanon echo|echo icanon)' 5 >/dev/null && pass || fail "terminal not sane after q"
+wait_for 'done-42' 5 >/dev/null && pass || fail "shell not usable after q"
+
+# 9. SIGTERM, SIGHUP and Ctrl-C restore the terminal too.
+for how in TERM HUP INT; do
+  tm send-keys -t v C-l
+  run "clear; $bin & pid=\$!; fg"
+  wait_for '\? help' 5 >/dev/null || fail "viewer did not start for SIG$how"
+  if [ "$how" = INT ]; then
+    tm send-keys -t v C-c
+  else
+    pkill -"$how" -f "^$bin\$" || fail "no viewer process for SIG$how"
+  fi
+  wait_for '^\$ ?$' 5 >/dev/null || fail "SIG$how did not end the viewer"
+  run "clear; stty -a | tr ' ' '\n' | grep -xE 'echo|icanon' | tr '\n' ' '; echo"
+  wait_for '^(icanon echo|echo icanon)' 5 >/dev/null && pass || fail "terminal not sane after SIG$how"
+done
+
+# 10. Bad models, escapes in names, dumb terminals.
+run "clear; $bin $src/tests/models/bad/undefined_vertex.dat; echo exit=\$?"
+wait_for 'undefined_vertex.dat:14:7: vertex 12 is not defined' 5 >/dev/null && pass || fail "bad model at start"
+wait_for 'exit=1' 5 >/dev/null && pass || fail "bad model exit code"
+cp "$src/data/wedge.dat" "$work/$(printf 'evil\033[7mname').dat"
+run "clear; cd $work && $bin evil*name.dat"
+wait_for 'evil\\x1B\[7mname' 5 >/dev/null || fail "escape in the model name not shown escaped"
+tm send-keys -t v o
+tm send-keys -t v -l "nothing-here.dat"
+tm send-keys -t v Enter
+wait_for 'nothing-here.dat: cannot open' 5 >/dev/null && pass || fail "missing file at o"
+tm send-keys -t v '?'
+wait_for 'termshade keys' 5 >/dev/null && pass || fail "help overlay"
+tm send-keys -t v x q
+wait_for '^\$ ?$' 5 >/dev/null || fail "q after help"
+run "clear; TERM=dumb $bin; echo exit=\$?"
+wait_for 'termshade render' 5 >/dev/null && pass || fail "dumb terminal message"
+wait_for 'exit=2' 5 >/dev/null && pass || fail "dumb terminal exit code"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

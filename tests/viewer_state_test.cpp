@@ -1,0 +1,123 @@
+// The viewer's state machine and status line, without a terminal.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "geometry/FitCamera.h"
+#include "support/TestSupport.h"
+#include "tui/LineEditor.h"
+#include "tui/StatusLine.h"
+#include "tui/ViewerState.h"
+
+namespace termshade {
+namespace {
+
+ViewerState DemoState() {
+  ViewerState state(ViewerOptions{}, 0.0);
+  EXPECT_FALSE(state.LoadFirst().has_value());
+  return state;
+}
+
+TEST(ViewerState, StartsAtTheSpecDefaultsOnTheDemo) {
+  const ViewerState state = DemoState();
+  EXPECT_EQ(state.ModelLabel(), "demo");
+  EXPECT_DOUBLE_EQ(state.View().theta, 0.3);
+  EXPECT_DOUBLE_EQ(state.View().phi, 1.3);
+  EXPECT_DOUBLE_EQ(state.CellAspect(), 2.0);
+  EXPECT_EQ(state.CurrentScene().FaceCount(), 1861U);
+}
+
+TEST(ViewerState, TerminalAspectIsUsedUnlessOverridden) {
+  EXPECT_DOUBLE_EQ(ViewerState(ViewerOptions{}, 1.8).CellAspect(), 1.8);
+  ViewerOptions options;
+  options.cellAspect = 2.2;
+  EXPECT_DOUBLE_EQ(ViewerState(options, 1.8).CellAspect(), 2.2);
+}
+
+TEST(ViewerState, CameraEqualsTheHeadlessFit) {
+  const ViewerState state = DemoState();
+  const Camera viewer = state.CameraFor(80, 24);
+  const Camera headless = FitCamera(state.CurrentScene(), state.View(), 80, 24, 2.0);
+  EXPECT_EQ(viewer.projection.d, headless.projection.d);
+  EXPECT_EQ(viewer.projection.cx, headless.projection.cx);
+}
+
+TEST(ViewerState, OrbitStepsAndPhiLimits) {
+  ViewerState state = DemoState();
+  state.Apply(ViewerAction::kOrbitRight);
+  state.Apply(ViewerAction::kOrbitRight);
+  state.Apply(ViewerAction::kOrbitUp);
+  EXPECT_NEAR(state.View().theta, 0.5, 1e-12);
+  EXPECT_NEAR(state.View().phi, 1.2, 1e-12);
+  for (int i = 0; i < 40; ++i) state.Apply(ViewerAction::kOrbitDown);
+  EXPECT_DOUBLE_EQ(state.View().phi, std::numbers::pi);
+}
+
+TEST(ViewerState, DistanceStaysWithinLimits) {
+  ViewerState state = DemoState();
+  const double start = state.View().rho;
+  state.Apply(ViewerAction::kCloser);
+  EXPECT_DOUBLE_EQ(state.View().rho, start / 2.0);
+  state.Apply(ViewerAction::kCloser);
+  EXPECT_DOUBLE_EQ(state.View().rho, start / 3.0);  // clamped at rhoMin = rho / 3
+  for (int i = 0; i < 20; ++i) state.Apply(ViewerAction::kFarther);
+  EXPECT_DOUBLE_EQ(state.View().rho, 1000.0 * start / 3.0);
+  state.Apply(ViewerAction::kResetView);
+  EXPECT_DOUBLE_EQ(state.View().rho, start);
+}
+
+TEST(ViewerState, LightModeMovesTheSunNotTheEye) {
+  ViewerState state = DemoState();
+  const Vec3 sunBefore = state.Render().sunEye;
+  state.Apply(ViewerAction::kToggleLightMode);
+  state.Apply(ViewerAction::kOrbitLeft);
+  EXPECT_DOUBLE_EQ(state.View().theta, 0.3);
+  EXPECT_GT(Length(state.Render().sunEye - sunBefore), 0.05);
+  EXPECT_NEAR(Length(state.Render().sunEye), 1.0, 1e-12);
+}
+
+TEST(ViewerState, ModesCycle) {
+  ViewerState state = DemoState();
+  const Method expected[] = {Method::kPainter, Method::kCull, Method::kWire, Method::kZBuffer};
+  for (Method method : expected) {
+    state.Apply(ViewerAction::kCycleMethod);
+    EXPECT_EQ(state.Render().method, method);
+  }
+  state.Apply(ViewerAction::kCycleShade);
+  EXPECT_EQ(state.Render().shade, ShadeMode::kLambert);
+}
+
+TEST(ViewerState, BadOpenKeepsTheModelAndSaysWhy) {
+  ViewerState state = DemoState();
+  state.OpenPath(test::SourcePath("tests/models/bad/undefined_vertex.dat"));
+  EXPECT_EQ(state.Message(), "undefined_vertex.dat:14:7: vertex 12 is not defined (highest is 9)");
+  EXPECT_EQ(state.ModelLabel(), "demo");
+  state.OpenPath(test::SourcePath("data/cube.dat"));
+  EXPECT_EQ(state.CurrentScene().FaceCount(), 6U);
+  state.Apply(ViewerAction::kNextModel);
+  EXPECT_EQ(state.ModelLabel(), "demo [1/2]");
+}
+
+TEST(StatusLine, DropsTheLeastImportantSegmentsFirst) {
+  const std::vector<StatusSegment> segments{
+      {"model.dat", 0, false}, {"zbuffer contrast", 2, false}, {"theta 0.30", 1, true}};
+  EXPECT_EQ(ComposeStatusLine(segments, 50),
+            "model.dat | zbuffer contrast            theta 0.30");
+  EXPECT_EQ(ComposeStatusLine(segments, 25), "model.dat      theta 0.30");
+  EXPECT_EQ(ComposeStatusLine(segments, 6), "model.");
+}
+
+TEST(LineEditor, EditsAndRefusesControlCharacters) {
+  LineEditor editor;
+  for (char c : std::string("cub.dat")) editor.Insert(c);
+  editor.Home();
+  for (int i = 0; i < 3; ++i) editor.Right();
+  editor.Insert('e');
+  editor.Insert('\x1b');
+  editor.End();
+  editor.Backspace();
+  EXPECT_EQ(editor.Text(), "cube.da");
+}
+
+}  // namespace
+}  // namespace termshade
