@@ -36,13 +36,14 @@ wait_for() {  # wait_for REGEX SECONDS: until the screen matches
   return 1
 }
 
-# Waits until the screen stops changing (the viewer drew its frame).
+# Waits until the screen has not changed for 0.3 s (the viewer drew its frame).
 settle() {
-  local previous="" current
-  for _ in $(seq 1 50); do
+  local previous="" current stable=0
+  for _ in $(seq 1 100); do
     sleep 0.1
     current=$(screen)
-    [ "$current" = "$previous" ] && return 0
+    if [ "$current" = "$previous" ]; then stable=$((stable + 1)); else stable=0; fi
+    [ "$stable" -ge 3 ] && return 0
     previous=$current
   done
 }
@@ -96,6 +97,7 @@ frame_matches_render resize_rerenders 30 "$src/data/sphere_cone.dat" --size 100x
 tm resize-window -t v -x 12 -y 3
 wait_for 'terminal too' 5 >/dev/null && pass || fail "no too-small message"
 tm resize-window -t v -x 80 -y 25
+wait_for 'theta 0\.30' 5 >/dev/null || fail "no frame after growing again"
 frame_matches_render recovers_after_too_small 24 "$src/data/sphere_cone.dat" --size 80x24
 
 # 6. A bad path typed at 'o' shows an error and keeps the model.
