@@ -34,6 +34,11 @@ void DrawLine(const CellPoint& a, const CellPoint& b, double cellAspect, uint32_
   const bool alongColumns = std::fabs(du) >= std::fabs(dv);
   const double major0 = alongColumns ? a.u : a.v, major1 = alongColumns ? b.u : b.v;
   const double low = std::min(major0, major1), high = std::max(major0, major1);
+  if (!(high > low)) {  // a point (both ends in one place): no direction to step along
+    Plot(static_cast<int>(std::floor(a.u)), static_cast<int>(std::floor(a.v)),
+         static_cast<float>(a.w), glyph, faceNumber, level, depth, cells);
+    return;
+  }
   const int limit = alongColumns ? cells.WidthCells() : cells.HeightCells();
   // Cells whose center (k + 0.5) the segment passes along its major axis.
   const int first = std::max(0, static_cast<int>(std::ceil(low - 0.5)));

@@ -9,5 +9,5 @@ cmake --build --preset fuzz
 corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 cp data/*.dat tests/models/good/*.dat tests/models/bad/*.dat "$corpus"/
-./build-fuzz/dat_fuzzer -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
+./build-fuzz/dat_fuzzer -artifact_prefix="${ARTIFACTS:-$corpus/}" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
   -print_final_stats=1 "$corpus"
