@@ -33,15 +33,6 @@ ViewClipPlanes MakeViewClipPlanes(const Projection& projection, double nearModel
   }};
 }
 
-unsigned OutCode(const ViewClipPlanes& planes, Vec3 pEye) {
-  unsigned code = 0;
-  for (size_t i = 0; i < planes.size(); ++i) {
-    // NaN compares false, so a NaN point is outside every plane.
-    if (!(planes[i].Distance(pEye) >= 0.0)) code |= 1U << i;
-  }
-  return code;
-}
-
 void ClipTriangle(const std::array<Vec3, 3>& triangleEye, const ViewClipPlanes& planes,
                   ClippedPolygon& out) {
   ClippedPolygon scratch;

@@ -21,8 +21,15 @@ struct ClipPlane {
 using ViewClipPlanes = std::array<ClipPlane, 5>;
 ViewClipPlanes MakeViewClipPlanes(const Projection& projection, double nearModelUnits);
 
-/// Bit i set when p is outside plane i.
-unsigned OutCode(const ViewClipPlanes& planes, Vec3 pEye);
+/// Bit i set when p is outside plane i (NaN is outside every plane). Inline:
+/// it runs once per vertex per frame.
+inline unsigned OutCode(const ViewClipPlanes& planes, Vec3 pEye) {
+  unsigned code = 0;
+  for (unsigned i = 0; i < planes.size(); ++i) {
+    code |= static_cast<unsigned>(!(planes[i].Distance(pEye) >= 0.0)) << i;
+  }
+  return code;
+}
 
 /// A convex polygon: a clipped triangle has at most 3 + 5 corners.
 struct ClippedPolygon {

@@ -28,18 +28,4 @@ Mat4 operator*(const Mat4& a, const Mat4& b) {
   return r;
 }
 
-Vec3 TransformPoint(const Mat4& aFromB, Vec3 pB) {
-  const Mat4& t = aFromB;
-  return {t.At(0, 0) * pB.x + t.At(0, 1) * pB.y + t.At(0, 2) * pB.z + t.At(0, 3),
-          t.At(1, 0) * pB.x + t.At(1, 1) * pB.y + t.At(1, 2) * pB.z + t.At(1, 3),
-          t.At(2, 0) * pB.x + t.At(2, 1) * pB.y + t.At(2, 2) * pB.z + t.At(2, 3)};
-}
-
-Vec3 TransformDirection(const Mat4& aFromB, Vec3 dirB) {
-  const Mat4& t = aFromB;
-  return {t.At(0, 0) * dirB.x + t.At(0, 1) * dirB.y + t.At(0, 2) * dirB.z,
-          t.At(1, 0) * dirB.x + t.At(1, 1) * dirB.y + t.At(1, 2) * dirB.z,
-          t.At(2, 0) * dirB.x + t.At(2, 1) * dirB.y + t.At(2, 2) * dirB.z};
-}
-
 }  // namespace termshade

@@ -20,8 +20,19 @@ struct Mat4 {
 Mat4 operator*(const Mat4& a, const Mat4& b);
 
 /// Applies the affine part to a point (w = 1).
-Vec3 TransformPoint(const Mat4& aFromB, Vec3 pB);
+inline Vec3 TransformPoint(const Mat4& aFromB, Vec3 pB) {
+  const auto& m = aFromB.m;
+  return {m[0] * pB.x + m[1] * pB.y + m[2] * pB.z + m[3],
+          m[4] * pB.x + m[5] * pB.y + m[6] * pB.z + m[7],
+          m[8] * pB.x + m[9] * pB.y + m[10] * pB.z + m[11]};
+}
+
 /// Applies the linear part only (w = 0): directions and normals of rigid transforms.
-Vec3 TransformDirection(const Mat4& aFromB, Vec3 dirB);
+inline Vec3 TransformDirection(const Mat4& aFromB, Vec3 dirB) {
+  const auto& m = aFromB.m;
+  return {m[0] * dirB.x + m[1] * dirB.y + m[2] * dirB.z,
+          m[4] * dirB.x + m[5] * dirB.y + m[6] * dirB.z,
+          m[8] * dirB.x + m[9] * dirB.y + m[10] * dirB.z};
+}
 
 }  // namespace termshade

@@ -14,8 +14,10 @@ constexpr int32_t kFixedHalf = kFixedOne / 2;
 /// product of fixed-point differences below 2^62.
 constexpr double kGuardBandCells = 1 << 21;
 
+/// Rounds half away from zero; callers keep |cells| below kGuardBandCells.
 inline int32_t SnapToFixed(double cells) {
-  return static_cast<int32_t>(std::lround(cells * kFixedOne));
+  const double scaled = cells * kFixedOne;
+  return static_cast<int32_t>(scaled + (scaled >= 0.0 ? 0.5 : -0.5));
 }
 
 }  // namespace termshade

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/FixedRange.h"
 #include "geometry/ViewingTransform.h"
 #include "raster/FixedPoint.h"
 #include "raster/LineRasterizer.h"
@@ -34,40 +35,52 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera,
   } else {
     stats.trianglesDrawn = DrawSurfaces(scene, camera, options, depth, cells);
   }
-  stats.facesVisible = ShadeCells(options, cells);
+  stats.facesVisible = ShadeCells(scene, options, cells);
   return stats;
 }
 
 void Renderer::TransformVertices(const Scene& scene, const Camera& camera) {
-  const Mat4 eyeFromWorld = EyeFromWorld(camera.view);
+  eyeFromWorld_ = EyeFromWorld(camera.view);
+  const Mat4& eyeFromWorld = eyeFromWorld_;
+  const Projection& proj = camera.projection;
   const size_t count = scene.verticesWorld.size();
-  verticesEye_.resize(count);
+  zEye_.resize(count);
   rasterVertices_.resize(count);
   outCodes_.resize(count);
+  const double vScale = proj.d / proj.cellAspect;
+  // A vertex this far inside every clip plane is inside for certain, whatever
+  // the rounding; only the others need the exact out-codes.
+  const double nearZ = 2.0 * -clipPlanes_[0].offset;
+  const double xLimit = 0.5 * (kClipRangeCells - proj.cx), yLimit = 0.5 * (kClipRangeCells - proj.cy);
   for (size_t i = 0; i < count; ++i) {
     const Vec3 pEye = TransformPoint(eyeFromWorld, scene.verticesWorld[i]);
-    verticesEye_[i] = pEye;
-    outCodes_[i] = static_cast<uint8_t>(OutCode(clipPlanes_, pEye));
-    // Only vertices inside every plane are projected here; the others are clipped first.
-    rasterVertices_[i] = outCodes_[i] == 0 ? ToRaster(ProjectToCell(camera.projection, pEye))
-                                           : RasterVertex{};
+    zEye_[i] = pEye.z;
+    // ProjectToCell, inlined: u = cx + d x w, v = cy - d y w / a with w = -1/z.
+    const double w = -1.0 / pEye.z;
+    const double xCells = proj.d * pEye.x * w, yCells = vScale * pEye.y * w;
+    if (pEye.z <= -nearZ && std::fabs(xCells) <= xLimit && std::fabs(yCells) <= yLimit) {
+      outCodes_[i] = 0;
+      rasterVertices_[i] = {SnapToFixed(proj.cx + xCells), SnapToFixed(proj.cy - yCells),
+                            static_cast<float>(w)};
+      continue;
+    }
+    const unsigned code = OutCode(clipPlanes_, pEye);
+    outCodes_[i] = static_cast<uint8_t>(code);
+    rasterVertices_[i] = code == 0 ? ToRaster(ProjectToCell(proj, pEye)) : RasterVertex{};
   }
 }
 
 void Renderer::ClassifyFaces(const Scene& scene, const Camera& camera,
                              const RenderOptions& options) {
-  const Mat4 eyeFromWorld = EyeFromWorld(camera.view);
   const Vec3 eyeWorld = EyePositionWorld(camera.view);
   const size_t faceCount = scene.FaceCount();
+  faceFront_.resize(faceCount);
   faceDrawn_.resize(faceCount);
-  faceSunDots_.resize(faceCount);
   for (size_t f = 0; f < faceCount; ++f) {
-    const Vec3 nWorld = scene.faceNormalsWorld[f];
     // Front-facing: the eye is strictly in front of the face's plane (h < 0 in eye space).
-    const bool front = Dot(nWorld, eyeWorld) > scene.facePlaneOffsets[f];
+    const bool front = Dot(scene.faceNormalsWorld[f], eyeWorld) > scene.facePlaneOffsets[f];
+    faceFront_[f] = front;
     faceDrawn_[f] = front || !options.cullBackFaces;
-    const Vec3 nEye = TransformDirection(eyeFromWorld, front ? nWorld : -nWorld);
-    faceSunDots_[f] = static_cast<float>(Dot(nEye, options.sunEye));
   }
 }
 
@@ -79,13 +92,19 @@ int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t tr
                              outCodes_[t.vertices[2]]};
   // Fast path: wholly inside the near plane and the guard band.
   if ((codes[0] | codes[1] | codes[2]) == 0) {
-    RasterizeTriangle(rasterVertices_[t.vertices[0]], rasterVertices_[t.vertices[1]],
-                      rasterVertices_[t.vertices[2]], faceNumber, rule, depth, cells);
+    const RasterVertex& a = rasterVertices_[t.vertices[0]];
+    const RasterVertex& b = rasterVertices_[t.vertices[1]];
+    const RasterVertex& c = rasterVertices_[t.vertices[2]];
+    if (MayCoverSample(a, b, c, cells.WidthCells(), cells.HeightCells())) {
+      RasterizeTriangle(a, b, c, faceNumber, rule, depth, cells);
+    }
     return 1;
   }
   if ((codes[0] & codes[1] & codes[2]) != 0) return 0;
-  const std::array<Vec3, 3> cornersEye{verticesEye_[t.vertices[0]], verticesEye_[t.vertices[1]],
-                                       verticesEye_[t.vertices[2]]};
+  // Rare: recompute eye coordinates rather than store them for every vertex.
+  const std::array<Vec3, 3> cornersEye{TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[0]]),
+                                       TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[1]]),
+                                       TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[2]])};
   if (!IsFinite(cornersEye[0]) || !IsFinite(cornersEye[1]) || !IsFinite(cornersEye[2])) return 0;
   ClippedPolygon clipped;
   ClipTriangle(cornersEye, clipPlanes_, clipped);
@@ -105,15 +124,14 @@ int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t tr
 int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera,
                            const RenderOptions& options, DepthBuffer& depth, CellBuffer& cells) {
   int drawn = 0;
-  const auto triangleCount = static_cast<uint32_t>(scene.triangles.size());
   if (options.method == Method::kPainter) {
+    const auto triangleCount = static_cast<uint32_t>(scene.triangles.size());
     // Textbook painter: far to near by the sum of the vertices' eye z.
     painterOrder_.clear();
     for (uint32_t i = 0; i < triangleCount; ++i) {
       const SceneTriangle& t = scene.triangles[i];
       if (!faceDrawn_[t.face]) continue;
-      const double zSum = verticesEye_[t.vertices[0]].z + verticesEye_[t.vertices[1]].z +
-                          verticesEye_[t.vertices[2]].z;
+      const double zSum = zEye_[t.vertices[0]] + zEye_[t.vertices[1]] + zEye_[t.vertices[2]];
       painterOrder_.emplace_back(zSum, i);
     }
     std::sort(painterOrder_.begin(), painterOrder_.end());
@@ -124,8 +142,10 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera,
   }
   const DepthRule rule =
       options.method == Method::kZBuffer ? DepthRule::kNearestWins : DepthRule::kOverwrite;
-  for (uint32_t i = 0; i < triangleCount; ++i) {
-    if (faceDrawn_[scene.triangles[i].face]) {
+  // Face by face, so culled faces' triangles are never even loaded.
+  for (size_t f = 0; f < scene.FaceCount(); ++f) {
+    if (!faceDrawn_[f]) continue;
+    for (uint32_t i = scene.faceTriangleStarts[f]; i < scene.faceTriangleStarts[f + 1]; ++i) {
       drawn += DrawTriangle(scene, camera, i, rule, depth, cells);
     }
   }
@@ -137,8 +157,8 @@ int Renderer::DrawEdges(const Scene& scene, const Camera& camera, const RenderOp
   const auto topLevel = static_cast<int16_t>(options.ramp.LevelCount() - 1);
   int drawn = 0;
   for (const SceneEdge& edge : scene.edges) {
-    Vec3 aEye = verticesEye_[edge.vertices[0]];
-    Vec3 bEye = verticesEye_[edge.vertices[1]];
+    Vec3 aEye = TransformPoint(eyeFromWorld_, scene.verticesWorld[edge.vertices[0]]);
+    Vec3 bEye = TransformPoint(eyeFromWorld_, scene.verticesWorld[edge.vertices[1]]);
     if (!IsFinite(aEye) || !IsFinite(bEye) || !ClipSegment(aEye, bEye, clipPlanes_)) continue;
     const uint32_t faceNumber = edge.face == UINT32_MAX ? 0 : edge.face + 1;
     DrawLine(ProjectToCell(camera.projection, aEye), ProjectToCell(camera.projection, bEye),
@@ -149,39 +169,49 @@ int Renderer::DrawEdges(const Scene& scene, const Camera& camera, const RenderOp
 }
 
 // Turns the face seen in each cell into a ramp glyph; returns the faces seen.
-int Renderer::ShadeCells(const RenderOptions& options, CellBuffer& cells) {
+int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells) {
+  // Step 1: the faces seen, found from the cells (no pass over all faces).
   auto& faces = cells.FaceNumbers();
-  faceSeen_.assign(faceSunDots_.size(), 0);
+  faceLevels_.resize(scene.FaceCount(), -1);
+  seenFaces_.clear();
   for (uint32_t faceNumber : faces) {
-    if (faceNumber != 0) faceSeen_[faceNumber - 1] = 1;
+    if (faceNumber != 0 && faceLevels_[faceNumber - 1] == -1) {
+      faceLevels_[faceNumber - 1] = 0;  // marked; restored to -1 below
+      seenFaces_.push_back(faceNumber - 1);
+    }
   }
-  int seenCount = 0;
+  // Step 2: n.s per seen face, with n turned towards the eye, in world space.
+  const Mat4& m = eyeFromWorld_;
+  const Vec3 s = options.sunEye;
+  const Vec3 sunWorld{m.At(0, 0) * s.x + m.At(1, 0) * s.y + m.At(2, 0) * s.z,
+                      m.At(0, 1) * s.x + m.At(1, 1) * s.y + m.At(2, 1) * s.z,
+                      m.At(0, 2) * s.x + m.At(1, 2) * s.y + m.At(2, 2) * s.z};
   double minDot = INFINITY, maxDot = -INFINITY;
-  for (size_t f = 0; f < faceSeen_.size(); ++f) {
-    if (!faceSeen_[f]) continue;
-    ++seenCount;
-    minDot = std::min(minDot, static_cast<double>(faceSunDots_[f]));
-    maxDot = std::max(maxDot, static_cast<double>(faceSunDots_[f]));
+  seenSunDots_.clear();
+  for (uint32_t f : seenFaces_) {
+    const double dot = Dot(scene.faceNormalsWorld[f], sunWorld) * (faceFront_[f] ? 1.0 : -1.0);
+    seenSunDots_.push_back(dot);
+    minDot = std::min(minDot, dot);
+    maxDot = std::max(maxDot, dot);
   }
-  if (options.method == Method::kWire) return seenCount;
-
-  faceLevels_.resize(faceSunDots_.size());
-  for (size_t f = 0; f < faceSeen_.size(); ++f) {
-    if (!faceSeen_[f]) continue;
-    const double dot = faceSunDots_[f];
+  // Step 3: levels per face, then glyphs per cell.
+  for (size_t i = 0; i < seenFaces_.size(); ++i) {
     const double intensity = options.shade == ShadeMode::kContrast
-                                 ? ContrastIntensity(dot, minDot, maxDot, options.ambient)
-                                 : LambertIntensity(dot, options.ambient);
-    faceLevels_[f] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
+                                 ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, options.ambient)
+                                 : LambertIntensity(seenSunDots_[i], options.ambient);
+    faceLevels_[seenFaces_[i]] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
   }
-  auto& glyphs = cells.Glyphs();
-  auto& levels = cells.Levels();
-  for (size_t i = 0; i < faces.size(); ++i) {
-    if (faces[i] == 0) continue;
-    levels[i] = faceLevels_[faces[i] - 1];
-    glyphs[i] = options.ramp.Glyph(levels[i]);
+  if (options.method != Method::kWire) {
+    auto& glyphs = cells.Glyphs();
+    auto& levels = cells.Levels();
+    for (size_t i = 0; i < faces.size(); ++i) {
+      if (faces[i] == 0) continue;
+      levels[i] = faceLevels_[faces[i] - 1];
+      glyphs[i] = options.ramp.Glyph(levels[i]);
+    }
   }
-  return seenCount;
+  for (uint32_t f : seenFaces_) faceLevels_[f] = -1;
+  return static_cast<int>(seenFaces_.size());
 }
 
 }  // namespace termshade

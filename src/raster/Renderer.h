@@ -38,16 +38,18 @@ class Renderer {
                    DepthBuffer& depth, CellBuffer& cells);
   int DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,
                 DepthBuffer& depth, CellBuffer& cells);
-  int ShadeCells(const RenderOptions& options, CellBuffer& cells);
+  int ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells);
 
   ViewClipPlanes clipPlanes_{};
-  std::vector<Vec3> verticesEye_;
+  Mat4 eyeFromWorld_;
+  std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
   std::vector<uint8_t> outCodes_;
+  std::vector<uint8_t> faceFront_;      ///< per face: the eye is in front of its plane
   std::vector<uint8_t> faceDrawn_;      ///< per face: drawn this frame (front, or culling off)
-  std::vector<float> faceSunDots_;      ///< per face: n.s with n turned towards the eye
-  std::vector<int16_t> faceLevels_;     ///< per face: ramp level this frame
-  std::vector<uint8_t> faceSeen_;
+  std::vector<int16_t> faceLevels_;     ///< per face: ramp level; -1 between frames
+  std::vector<uint32_t> seenFaces_;     ///< faces seen in some cell this frame
+  std::vector<double> seenSunDots_;     ///< their n.s, n turned towards the eye
   std::vector<std::pair<double, uint32_t>> painterOrder_;
 };
 

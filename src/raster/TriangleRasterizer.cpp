@@ -27,21 +27,26 @@ Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int
   return e;
 }
 
-int FloorDiv(int64_t value, int64_t divisor) {
-  return static_cast<int>(value >= 0 ? value / divisor : -((-value + divisor - 1) / divisor));
-}
-
-// Range of cells whose sample (c * 256 + 128) lies in [low, high].
-void SampleRange(int64_t low, int64_t high, int limit, int& first, int& last) {
-  first = std::max(0, FloorDiv(low - kFixedHalf + kFixedOne - 1, kFixedOne));
-  last = std::min(limit - 1, FloorDiv(high - kFixedHalf, kFixedOne));
+// Range of cells whose sample (c * 256 + 128) lies in [low, high]; >> is a
+// floor division by 256 (arithmetic shift, C++20).
+void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
+  first = std::max(0, (low - kFixedHalf + kFixedOne - 1) >> kSubCellBits);
+  last = std::min(limit - 1, (high - kFixedHalf) >> kSubCellBits);
 }
 
 }  // namespace
 
 int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                       uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells) {
-  // Step 1: orient clockwise on screen (positive area); drop empty triangles.
+  // Step 1: the cells whose samples the bounding box holds; most triangles
+  // of a fine mesh hold none and stop here.
+  int col0 = 0, col1 = 0, row0 = 0, row1 = 0;
+  SampleRange(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), cells.WidthCells(), col0, col1);
+  if (col0 > col1) return 0;
+  SampleRange(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), cells.HeightCells(), row0, row1);
+  if (row0 > row1) return 0;
+
+  // Step 2: orient clockwise on screen (positive area); drop empty triangles.
   const RasterVertex* v0 = &a;
   const RasterVertex* v1 = &b;
   const RasterVertex* v2 = &c;
@@ -52,14 +57,6 @@ int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const Raster
     std::swap(v1, v2);
     area = -area;
   }
-
-  // Step 2: the cells whose samples the bounding box holds.
-  int col0 = 0, col1 = 0, row0 = 0, row1 = 0;
-  SampleRange(std::min({v0->x, v1->x, v2->x}), std::max({v0->x, v1->x, v2->x}),
-              cells.WidthCells(), col0, col1);
-  SampleRange(std::min({v0->y, v1->y, v2->y}), std::max({v0->y, v1->y, v2->y}),
-              cells.HeightCells(), row0, row1);
-  if (col0 > col1 || row0 > row1) return 0;
 
   // Step 3: edge functions at the first sample, stepped per cell.
   const int64_t originX = int64_t{col0} * kFixedOne + kFixedHalf;

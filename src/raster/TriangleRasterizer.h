@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "raster/CellBuffer.h"
@@ -13,6 +14,18 @@ struct RasterVertex {
   int32_t y = 0;
   float w = 0.0F;
 };
+
+/// False when the triangle's bounding box holds no cell-center sample of a
+/// widthCells x heightCells view: the cheap early-out for sub-cell triangles.
+inline bool MayCoverSample(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                           int widthCells, int heightCells) {
+  // Samples sit at 256 k + 128: the box must contain one in x and in y.
+  const int32_t minX = std::min({a.x, b.x, c.x}), maxX = std::max({a.x, b.x, c.x});
+  const int32_t minY = std::min({a.y, b.y, c.y}), maxY = std::max({a.y, b.y, c.y});
+  const int32_t firstCol = std::max(0, (minX + 127) >> 8), lastCol = std::min(widthCells - 1, (maxX - 128) >> 8);
+  const int32_t firstRow = std::max(0, (minY + 127) >> 8), lastRow = std::min(heightCells - 1, (maxY - 128) >> 8);
+  return firstCol <= lastCol && firstRow <= lastRow;
+}
 
 enum class DepthRule {
   kNearestWins,  ///< Z-buffer: larger w wins; equal w goes to the lower face number
