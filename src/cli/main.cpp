@@ -5,7 +5,9 @@
 #include <exception>
 #include <iostream>
 #include <regex>
+#include <unistd.h>
 
+#include "TerminalBench.h"
 #include "cli/GenerateCommand.h"
 #include "cli/RenderCommand.h"
 #include "tui/Viewer.h"
@@ -135,11 +137,36 @@ int Run(int argc, char** argv) {
       ->required();
   generateCommand->add_option("-o,--output", generateOutput, "file (or directory for 'all')");
 
+  // Measurements: termshade bench terminal [options]
+  CLI::App* benchCommand = app.add_subcommand("bench", "measure the program (see README)");
+  benchCommand->require_subcommand(1);
+  termshade::TerminalBenchOptions terminalBench;
+  CLI::App* terminalCommand = benchCommand->add_subcommand(
+      "terminal", "bytes and write() calls the viewer sends per frame, idle CPU (runs it in a pty)");
+  terminalCommand->add_option("model", terminalBench.modelPath, "model file (default: the demo scene)");
+  terminalCommand->add_option("--cols", terminalBench.widthCells, "terminal width (default 160)")
+      ->check(CLI::Range(20, 1000));
+  terminalCommand->add_option("--rows", terminalBench.heightCells, "terminal height (default 48)")
+      ->check(CLI::Range(4, 500));
+  terminalCommand->add_option("--idle-seconds", terminalBench.idleSeconds, "idle period (default 10)")
+      ->check(CLI::Range(0.5, 600.0));
+  terminalCommand->add_option("--turntable-seconds", terminalBench.turntableSeconds,
+                              "turntable period (default 4)")
+      ->check(CLI::Range(0.5, 600.0));
+  terminalCommand->add_flag("!--no-strace", terminalBench.traceWrites, "do not count write() calls");
+
   bool done = false;
   const int parseCode = ParseOrExit(app, argc, argv, done);
   if (done) return parseCode;
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(sceneName, generateOutput);
+  if (terminalCommand->parsed()) {
+    terminalBench.viewerPath = "/proc/self/exe";
+    char path[4096];
+    const ssize_t length = readlink("/proc/self/exe", path, sizeof path - 1);
+    if (length > 0) terminalBench.viewerPath.assign(path, static_cast<size_t>(length));
+    return termshade::RunTerminalBench(terminalBench);
+  }
   return RunViewerFrom(viewerLook, models, viewerAspect, mono);
 }
 

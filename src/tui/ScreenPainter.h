@@ -1,39 +1,28 @@
 #pragma once
 
+#include <optional>
 #include <string>
-#include <vector>
+#include <utility>
 
 #include "raster/CellBuffer.h"
 #include "tui/LineEditor.h"
-#include "tui/TerminalSession.h"
+#include "tui/ScreenGrid.h"
 
 namespace termshade {
 
-/// Puts a cell buffer, the status line and overlays on the ncurses screen.
-/// Everything is drawn into ncurses' virtual screen and sent with one
-/// doupdate(), so only cells that changed are written to the terminal.
+/// Composes what the viewer shows into a ScreenGrid: the frame from the one
+/// cell buffer, the status line, the prompt and the help overlay. No
+/// terminal code here; TerminalWriter sends the grid.
 class ScreenPainter {
  public:
-  explicit ScreenPainter(const TerminalSession& session) : session_(session) {}
-
-  static int Cols();
-  static int Rows();
-
-  void PaintFrame(const CellBuffer& cells, int levelCount, bool colour);
-  /// The bottom row, in reverse video; the text is sanitized and cut to fit.
-  void PaintStatus(const std::string& text);
-  void PaintPrompt(const std::string& label, const LineEditor& editor);
-  void PaintHelp();
-  void PaintTooSmall();
-  void HideCursor();
-  void Present();
-
- private:
-  void EnsureColourPairs(int levelCount);
-
-  const TerminalSession& session_;
-  int pairsForLevels_ = -1;
-  std::vector<unsigned int> rowScratch_;  // chtype per cell of one row (checked in the .cpp)
+  void PaintFrame(const CellBuffer& cells, ScreenGrid& grid) const;
+  /// The bottom row in reverse video; the text is sanitized and cut to fit.
+  void PaintStatus(const std::string& text, ScreenGrid& grid) const;
+  /// The bottom row as a text field; returns where the cursor goes (col, row).
+  std::pair<int, int> PaintPrompt(const std::string& label, const LineEditor& editor,
+                                  ScreenGrid& grid) const;
+  void PaintHelp(ScreenGrid& grid) const;
+  void PaintTooSmall(ScreenGrid& grid) const;
 };
 
 }  // namespace termshade

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
 
 namespace termshade {
@@ -48,6 +49,7 @@ TerminalSession::TerminalSession() {
   }
   // A short escape delay makes a lone Esc quick; ncurses reads it at newterm.
   setenv("ESCDELAY", "25", 0);
+
   SCREEN* screen = newterm(nullptr, stdout, stdin);
   if (screen == nullptr) return;
   screen_ = screen;
@@ -56,27 +58,36 @@ TerminalSession::TerminalSession() {
   cbreak();
   noecho();
   nonl();
-  keypad(stdscr, TRUE);
-  nodelay(stdscr, TRUE);
   curs_set(0);
+  WINDOW* pad = newpad(1, 1);
+  if (pad == nullptr) return;
+  inputPad_ = pad;
+  keypad(pad, TRUE);
+  nodelay(pad, TRUE);
+  // No typeahead check: ncurses would flush and poll stdin after every line.
+  typeahead(-1);
   mousemask(BUTTON1_PRESSED | BUTTON1_RELEASED | REPORT_MOUSE_POSITION | BUTTON4_PRESSED |
                 BUTTON5_PRESSED,
             nullptr);
   mouseinterval(0);
   if (has_colors() && start_color() == OK) {
-    use_default_colors();
-    colours_ = true;
-    colours256_ = COLORS >= 256 && COLOR_PAIRS >= 64;
+    colours_ = COLORS >= 256 ? ColourSupport::k256 : ColourSupport::kEight;
   }
 }
 
+int TerminalSession::NextKey() { return wgetch(static_cast<WINDOW*>(inputPad_)); }
+int TerminalSession::WidthCells() { return COLS; }
+int TerminalSession::HeightCells() { return LINES; }
+
 TerminalSession::~TerminalSession() {
+  if (inputPad_ != nullptr) delwin(static_cast<WINDOW*>(inputPad_));
   if (screen_ != nullptr) {
     mousemask(0, nullptr);
     endwin();
     delscreen(static_cast<SCREEN*>(screen_));
     RestoreSignalHandlers();
   }
+
   gSignalWriteFd.store(-1);
   for (int fd : signalPipe_) {
     if (fd >= 0) close(fd);

@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include "tui/TerminalWriter.h"
+
 namespace termshade {
 
 /// Why the viewer cannot take over the terminal, if it cannot.
@@ -10,7 +12,9 @@ std::optional<std::string> TerminalProblem();
 
 /// The ncurses session, RAII: the constructor takes over the terminal
 /// (cbreak, no echo, keypad, mouse, colour where there is some), the
-/// destructor gives it back exactly once, whatever path leads there.
+/// destructor gives it back exactly once, whatever path leads there. ncurses
+/// reads and decodes input and knows the terminal; drawing goes through
+/// TerminalWriter.
 /// SIGINT, SIGTERM, SIGHUP and SIGQUIT are turned into a byte on a pipe that
 /// the event loop polls, so they end the loop and the destructor runs.
 class TerminalSession {
@@ -20,10 +24,14 @@ class TerminalSession {
   TerminalSession(const TerminalSession&) = delete;
   TerminalSession& operator=(const TerminalSession&) = delete;
 
-  bool Ok() const { return screen_ != nullptr; }
-  /// 256 colours available (fixed xterm indices; no palette is redefined).
-  bool Has256Colours() const { return colours256_; }
-  bool HasColours() const { return colours_; }
+  bool Ok() const { return screen_ != nullptr && inputPad_ != nullptr; }
+  /// Colours available (fixed xterm indices; no palette is ever redefined).
+  ColourSupport Colours() const { return colours_; }
+  /// The next key (ncurses key codes, KEY_RESIZE and KEY_MOUSE included), or
+  /// ERR when none is waiting. Read through a pad, so ncurses never draws.
+  int NextKey();
+  static int WidthCells();
+  static int HeightCells();
   /// The read end of the signal pipe: readable once a terminating signal arrived.
   int SignalFd() const { return signalPipe_[0]; }
   /// True once a terminating signal arrived (drains the pipe).
@@ -35,9 +43,9 @@ class TerminalSession {
   void InstallSignalHandlers();
   void RestoreSignalHandlers();
 
-  void* screen_ = nullptr;  // SCREEN*, kept opaque so no header outside src/tui sees ncurses
-  bool colours_ = false;
-  bool colours256_ = false;
+  void* screen_ = nullptr;    // SCREEN*, kept opaque so no header outside src/tui sees ncurses
+  void* inputPad_ = nullptr;  // WINDOW*
+  ColourSupport colours_ = ColourSupport::kNone;
   int signalPipe_[2] = {-1, -1};
 };
 

@@ -15,6 +15,7 @@
 #include "tui/LineEditor.h"
 #include "tui/ScreenPainter.h"
 #include "tui/StatusLine.h"
+#include "tui/TerminalWriter.h"
 #include "tui/TerminalSession.h"
 #include "tui/ViewerState.h"
 
@@ -45,7 +46,7 @@ std::optional<NamedKey> NamedKeyFor(int key) {
 class EventLoop {
  public:
   EventLoop(ViewerState& state, TerminalSession& session)
-      : state_(state), session_(session), painter_(session) {}
+      : state_(state), session_(session), writer_(session.Colours(), STDOUT_FILENO) {}
 
   void Run() {
     auto nextTurntableFrame = Clock::now();
@@ -63,7 +64,7 @@ class EventLoop {
       if (session_.TakeSignal()) return;
       if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) return;  // terminal gone
       // Step 2: every key that queued up while drawing, applied before one redraw.
-      for (int key = getch(); key != ERR; key = getch()) HandleKey(key);
+      for (int key = session_.NextKey(); key != ERR; key = session_.NextKey()) HandleKey(key);
       // Step 3: the turntable, at a capped rate.
       if (state_.Turntable() && Clock::now() >= nextTurntableFrame) {
         state_.TurntableStep();
@@ -158,10 +159,12 @@ class EventLoop {
 
   void Draw() {
     dirty_ = false;
-    const int cols = ScreenPainter::Cols(), rows = ScreenPainter::Rows();
+    const int cols = TerminalSession::WidthCells(), rows = TerminalSession::HeightCells();
+    grid_.Resize(cols, rows);
+    const int levelCount = state_.Render().ramp.LevelCount();
     if (cols < kMinCols || rows < kMinRows) {
-      painter_.PaintTooSmall();
-      painter_.Present();
+      painter_.PaintTooSmall(grid_);
+      writer_.Present(grid_, false, levelCount, std::nullopt);
       return;
     }
     // Step 1: the frame, through the one shared pipeline.
@@ -173,16 +176,16 @@ class EventLoop {
         renderer_.Render(state_.CurrentScene(), state_.CameraFor(cols, frameRows), state_.Render(),
                          depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    painter_.PaintFrame(cells_, state_.Render().ramp.LevelCount(), state_.Colour());
-    // Step 2: overlays and the status line.
-    if (state_.HelpShown()) painter_.PaintHelp();
+    painter_.PaintFrame(cells_, grid_);
+    // Step 2: overlays and the status line, then one write of what changed.
+    if (state_.HelpShown()) painter_.PaintHelp(grid_);
+    std::optional<std::pair<int, int>> cursor;
     if (prompting_) {
-      painter_.PaintPrompt("open: ", editor_);
+      cursor = painter_.PaintPrompt("open: ", editor_, grid_);
     } else {
-      painter_.HideCursor();
-      painter_.PaintStatus(StatusText(stats, frameMs, cols));
+      painter_.PaintStatus(StatusText(stats, frameMs, cols), grid_);
     }
-    painter_.Present();
+    writer_.Present(grid_, state_.Colour(), levelCount, cursor);
   }
 
   // The status line, most important first: the message or model, the view,
@@ -214,6 +217,8 @@ class EventLoop {
   ViewerState& state_;
   TerminalSession& session_;
   ScreenPainter painter_;
+  TerminalWriter writer_;
+  ScreenGrid grid_;
   Renderer renderer_;
   CellBuffer cells_;
   DepthBuffer depth_;

@@ -153,6 +153,27 @@ tm send-keys -t v '?'
 wait_for 'termshade keys' 5 >/dev/null && pass || fail "help overlay"
 tm send-keys -t v x q
 wait_for '^\$ ?$' 5 >/dev/null || fail "q after help"
+# 11. Colour where the terminal has it (256 colours here), none with NO_COLOR or --mono,
+# and nothing of it left on the shell's line afterwards.
+run "clear; $bin"
+wait_for '\? help' 5 >/dev/null
+if tm capture-pane -t v -p -e | grep -q '48;5;153'; then pass; else fail "no light blue background"; fi
+tm send-keys -t v c
+settle
+if tm capture-pane -t v -p -e | grep -q '48;5;153'; then fail "c did not turn colour off"; else pass; fi
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+run "echo after-viewer"
+wait_for '^after-viewer' 5 >/dev/null
+if tm capture-pane -t v -p -e | grep 'after-viewer' | grep -q '48;5'; then fail "colour left on the shell"; else pass; fi
+for mono in "NO_COLOR=1 $bin" "$bin --mono"; do
+  run "clear; $mono"
+  wait_for '\? help' 5 >/dev/null
+  if tm capture-pane -t v -p -e | grep -q '38;5;'; then fail "colour despite: $mono"; else pass; fi
+  tm send-keys -t v q
+  wait_for '^\$ ?$' 5 >/dev/null
+done
+
 run "clear; TERM=dumb $bin; echo exit=\$?"
 wait_for 'termshade render' 5 >/dev/null && pass || fail "dumb terminal message"
 wait_for 'exit=2' 5 >/dev/null && pass || fail "dumb terminal exit code"

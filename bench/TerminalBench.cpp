@@ -1,0 +1,281 @@
+#include "TerminalBench.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace termshade {
+namespace {
+
+double RealtimeSeconds() {
+  timespec now{};
+  clock_gettime(CLOCK_REALTIME, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+// The viewer under test, on the master side of a pseudo-terminal.
+class PtySession {
+ public:
+  bool Start(const std::vector<std::string>& argv, int cols, int rows) {
+    winsize size{};
+    size.ws_col = static_cast<unsigned short>(cols);
+    size.ws_row = static_cast<unsigned short>(rows);
+    pid_ = forkpty(&master_, nullptr, nullptr, &size);
+    if (pid_ < 0) return false;
+    if (pid_ == 0) {
+      std::vector<char*> args;
+      for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+      args.push_back(nullptr);
+      setenv("TERM", "xterm-256color", 1);
+      unsetenv("NO_COLOR");
+      execvp(args[0], args.data());
+      _exit(127);
+    }
+    fcntl(master_, F_SETFL, fcntl(master_, F_GETFL) | O_NONBLOCK);
+    return true;
+  }
+
+  ~PtySession() {
+    if (pid_ > 0) {
+      kill(pid_, SIGTERM);
+      waitpid(pid_, nullptr, 0);
+    }
+    if (master_ >= 0) close(master_);
+  }
+
+  void Send(const std::string& keys) {
+    [[maybe_unused]] const ssize_t n = write(master_, keys.data(), keys.size());
+  }
+
+  // Reads until the viewer has been quiet for quietMs; returns the bytes read.
+  long ReadUntilQuiet(int quietMs, int limitMs = 10000) {
+    long total = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(limitMs);
+    while (std::chrono::steady_clock::now() < deadline) {
+      pollfd fd{master_, POLLIN, 0};
+      if (poll(&fd, 1, quietMs) <= 0) break;
+      total += Drain();
+    }
+    return total;
+  }
+
+  // Reads for a fixed time, noting when output arrived.
+  long ReadFor(double seconds, std::vector<double>* arrivals) {
+    long total = 0;
+    const double end = RealtimeSeconds() + seconds;
+    for (double now = RealtimeSeconds(); now < end; now = RealtimeSeconds()) {
+      pollfd fd{master_, POLLIN, 0};
+      if (poll(&fd, 1, static_cast<int>((end - now) * 1000) + 1) <= 0) continue;
+      const long n = Drain();
+      if (n > 0 && arrivals != nullptr) arrivals->push_back(RealtimeSeconds());
+      total += n;
+    }
+    return total;
+  }
+
+  pid_t Pid() const { return pid_; }
+  void Wait() {
+    waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+
+ private:
+  long Drain() {
+    long total = 0;
+    char buffer[65536];
+    for (ssize_t n = read(master_, buffer, sizeof buffer); n > 0; n = read(master_, buffer, sizeof buffer)) {
+      total += n;
+    }
+    return total;
+  }
+
+  int master_ = -1;
+  pid_t pid_ = -1;
+};
+
+// Groups times into bursts separated by more than gapSeconds: one burst, one frame.
+int CountBursts(const std::vector<double>& times, double gapSeconds) {
+  int bursts = 0;
+  for (size_t i = 0; i < times.size(); ++i) {
+    if (i == 0 || times[i] - times[i - 1] > gapSeconds) ++bursts;
+  }
+  return bursts;
+}
+
+// CPU seconds (user + system) a process has used, from /proc.
+double ProcessCpuSeconds(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+  const size_t close = text.rfind(')');
+  if (close == std::string::npos) return -1.0;
+  std::istringstream fields(text.substr(close + 2));
+  std::string field;
+  long utime = 0, stime = 0;
+  for (int i = 3; fields >> field; ++i) {
+    if (i == 14) utime = std::stol(field);
+    if (i == 15) {
+      stime = std::stol(field);
+      break;
+    }
+  }
+  return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
+// The viewer's process: the traced child when strace runs it.
+pid_t ViewerPid(pid_t sessionPid, bool traced) {
+  if (!traced) return sessionPid;
+  std::ifstream children("/proc/" + std::to_string(sessionPid) + "/task/" +
+                         std::to_string(sessionPid) + "/children");
+  pid_t child = -1;
+  children >> child;
+  return child > 0 ? child : sessionPid;
+}
+
+struct TracedWrite {
+  double time = 0.0;
+  long bytes = 0;
+};
+
+// strace -ttt lines: "PID 1700000000.123456 write(1, "..."..., 1234) = 1234".
+std::vector<TracedWrite> ReadTrace(const std::string& path) {
+  std::vector<TracedWrite> writes;
+  std::ifstream log(path);
+  for (std::string line; std::getline(log, line);) {
+    std::istringstream fields(line);
+    long pid = 0;
+    double time = 0.0;
+    std::string call;
+    if (!(fields >> pid >> time >> call)) continue;
+    if (call.rfind("write(1,", 0) != 0 && call.rfind("writev(1,", 0) != 0) continue;
+    const size_t equals = line.rfind("= ");
+    if (equals == std::string::npos) continue;
+    writes.push_back({time, std::atol(line.c_str() + equals + 2)});
+  }
+  return writes;
+}
+
+struct Phase {
+  double start = 0.0;
+  double end = 0.0;
+};
+
+void WritesIn(const std::vector<TracedWrite>& writes, const Phase& phase, long& calls, long& bytes,
+              std::vector<double>& times) {
+  calls = bytes = 0;
+  times.clear();
+  for (const TracedWrite& w : writes) {
+    if (w.time < phase.start || w.time > phase.end) continue;
+    ++calls;
+    bytes += w.bytes;
+    times.push_back(w.time);
+  }
+}
+
+double Median(std::vector<long> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t mid = values.size() / 2;
+  return values.size() % 2 ? static_cast<double>(values[mid])
+                           : 0.5 * static_cast<double>(values[mid - 1] + values[mid]);
+}
+
+}  // namespace
+
+int RunTerminalBench(const TerminalBenchOptions& options) {
+  const bool traced = options.traceWrites && std::system("command -v strace >/dev/null 2>&1") == 0;
+  char logTemplate[] = "/tmp/termshade-bench-XXXXXX";
+  const int logFd = mkstemp(logTemplate);
+  if (logFd >= 0) close(logFd);
+  const std::string logPath = logTemplate;
+
+  std::vector<std::string> argv;
+  if (traced) {
+    argv = {"strace", "-f", "-qq", "-ttt", "-e", "trace=write,writev", "-e", "signal=none", "-o", logPath};
+  }
+  argv.push_back(options.viewerPath);
+  if (!options.modelPath.empty()) argv.push_back(options.modelPath);
+
+  PtySession session;
+  if (!session.Start(argv, options.widthCells, options.heightCells)) {
+    std::cerr << "termshade bench: cannot open a pseudo-terminal\n";
+    return 1;
+  }
+  // Step 1: the first frame.
+  const long firstFrameBytes = session.ReadUntilQuiet(500);
+  if (firstFrameBytes == 0) {
+    std::cerr << "termshade bench: the viewer drew nothing\n";
+    return 1;
+  }
+  // Step 2: arrow keys, one frame each (xterm's keypad-mode right arrow).
+  std::vector<long> arrowBytes;
+  const Phase arrows{RealtimeSeconds(), 0.0};
+  for (int i = 0; i < options.arrowPresses; ++i) {
+    session.Send("\x1bOC");
+    arrowBytes.push_back(session.ReadUntilQuiet(100));
+  }
+  const Phase arrowsDone{arrows.start, RealtimeSeconds()};
+  // Step 3: the turntable.
+  session.Send(" ");
+  std::vector<double> arrivals;
+  const Phase turntable{RealtimeSeconds(), 0.0};
+  const long turntableBytes = session.ReadFor(options.turntableSeconds, &arrivals);
+  const Phase turntableDone{turntable.start, RealtimeSeconds()};
+  session.Send(" ");
+  session.ReadUntilQuiet(200);
+  // Step 4: idle, no input.
+  const pid_t viewer = ViewerPid(session.Pid(), traced);
+  const double cpuBefore = ProcessCpuSeconds(viewer);
+  const long idleBytes = session.ReadFor(options.idleSeconds, nullptr);
+  const double idleCpu = ProcessCpuSeconds(viewer) - cpuBefore;
+  session.Send("q");
+  session.ReadUntilQuiet(300);
+  session.Wait();
+
+  // Step 5: the report.
+  const int turntableFrames = std::max(1, CountBursts(arrivals, 0.015));
+  std::printf("termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, colour on\n",
+              options.widthCells, options.heightCells,
+              options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str());
+  std::printf("%-38s %12s\n", "measure", "value");
+  std::printf("%-38s %12ld\n", "first frame, bytes", firstFrameBytes);
+  std::printf("%-38s %12.0f\n", "per arrow key (median), bytes", Median(arrowBytes));
+  std::printf("%-38s %12.0f\n", "per turntable frame (mean), bytes",
+              static_cast<double>(turntableBytes) / turntableFrames);
+  std::printf("%-38s %12.1f\n", "turntable frames per second",
+              turntableFrames / options.turntableSeconds);
+  if (traced) {
+    const std::vector<TracedWrite> writes = ReadTrace(logPath);
+    long calls = 0, bytes = 0;
+    std::vector<double> times;
+    WritesIn(writes, arrowsDone, calls, bytes, times);
+    std::printf("%-38s %12.2f\n", "write() calls per arrow-key frame",
+                static_cast<double>(calls) / std::max(1, options.arrowPresses));
+    WritesIn(writes, turntableDone, calls, bytes, times);
+    const int frames = std::max(1, CountBursts(times, 0.015));
+    std::printf("%-38s %12.2f\n", "write() calls per turntable frame",
+                static_cast<double>(calls) / frames);
+  } else {
+    std::printf("%-38s %12s\n", "write() calls per frame", "(no strace)");
+  }
+  std::printf("%-38s %12ld\n", "idle: bytes written", idleBytes);
+  std::printf("%-38s %12.3f\n", "idle: CPU seconds", idleCpu);
+  std::printf("(over %.0f s without input; turntable %.0f s; %d arrow presses)\n",
+              options.idleSeconds, options.turntableSeconds, options.arrowPresses);
+  std::remove(logPath.c_str());
+  return 0;
+}
+
+}  // namespace termshade

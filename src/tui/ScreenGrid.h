@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace termshade {
+
+/// How a screen cell looks besides its character.
+enum class CellStyle : uint8_t {
+  kPlain,       ///< the terminal's default colours
+  kReverse,     ///< status line and overlays
+  kBackground,  ///< the model's empty background (light blue with colour)
+  kFace,        ///< a face; the shade level says which colour
+};
+
+/// One character cell of the terminal: printable ASCII and its style.
+struct ScreenCell {
+  char glyph = ' ';
+  CellStyle style = CellStyle::kPlain;
+  int8_t level = 0;  ///< shade level, for kFace
+  bool operator==(const ScreenCell& other) const {
+    return glyph == other.glyph && style == other.style && level == other.level;
+  }
+};
+
+/// What the terminal should show: the viewer composes a frame, the status
+/// line and overlays here, then TerminalWriter sends only what changed.
+class ScreenGrid {
+ public:
+  void Resize(int widthCells, int heightCells);
+  int WidthCells() const { return widthCells_; }
+  int HeightCells() const { return heightCells_; }
+  ScreenCell& At(int col, int row) { return cells_[static_cast<size_t>(row) * widthCells_ + col]; }
+  const ScreenCell& At(int col, int row) const {
+    return cells_[static_cast<size_t>(row) * widthCells_ + col];
+  }
+  /// Writes text from (col, row), cut at the right edge; bytes outside
+  /// printable ASCII become '?'.
+  void Put(int col, int row, std::string_view text, CellStyle style);
+  void FillRow(int row, CellStyle style);
+  void Clear();
+
+ private:
+  int widthCells_ = 0;
+  int heightCells_ = 0;
+  std::vector<ScreenCell> cells_;
+};
+
+}  // namespace termshade

@@ -1,0 +1,175 @@
+#include "tui/TerminalWriter.h"
+
+#include <curses.h>
+#include <term.h>
+#include <unistd.h>
+
+#include <cerrno>
+
+#include "shade/Palette.h"
+
+namespace termshade {
+namespace {
+
+// A terminfo string capability, or "" when the terminal lacks it.
+const char* Capability(const char* name) {
+  char* value = tigetstr(name);
+  return value == nullptr || value == reinterpret_cast<char*>(-1) ? "" : value;
+}
+
+void AppendParameterized(std::string& out, const char* name, int a) {
+  const char* format = Capability(name);
+  if (*format != '\0') out += tiparm(format, a);
+}
+
+constexpr int kEightYellow = 3;
+constexpr int kEightCyan = 6;
+
+}  // namespace
+
+void TerminalWriter::AppendMove(int col, int row) {
+  const char* cup = Capability("cup");
+  if (*cup != '\0') out_ += tiparm(cup, row, col);
+}
+
+TerminalWriter::Attributes TerminalWriter::AttributesFor(const ScreenCell& cell, bool colour,
+                                                         int levelCount) const {
+  Attributes a;
+  if (cell.style == CellStyle::kReverse) {
+    a.reverse = true;
+    return a;
+  }
+  if (!colour || colours_ == ColourSupport::kNone || cell.style == CellStyle::kPlain) return a;
+  const bool face = cell.style == CellStyle::kFace;
+  if (colours_ == ColourSupport::k256) {
+    a.background = kBackground256;
+    if (face) a.foreground = FaceColour256(cell.level, levelCount);
+    return a;
+  }
+  // Eight colours: yellow on cyan, brightness from dim and bold.
+  a.background = kEightCyan;
+  if (face) {
+    a.foreground = kEightYellow;
+    a.dim = cell.level * 3 < levelCount;
+    a.bold = cell.level * 3 >= 2 * levelCount;
+  }
+  return a;
+}
+
+void TerminalWriter::AppendAttributes(const Attributes& wanted) {
+  if (wanted == current_) return;
+  // SGR can only add attributes; dropping one (or a colour) means a reset first.
+  const bool reset = (current_.reverse && !wanted.reverse) || (current_.bold && !wanted.bold) ||
+                     (current_.dim && !wanted.dim) ||
+                     (current_.foreground >= 0 && wanted.foreground < 0) ||
+                     (current_.background >= 0 && wanted.background < 0);
+  if (reset) {
+    out_ += Capability("sgr0");
+    current_ = Attributes{};
+  }
+  if (wanted.reverse && !current_.reverse) out_ += Capability("rev");
+  if (wanted.bold && !current_.bold) out_ += Capability("bold");
+  if (wanted.dim && !current_.dim) out_ += Capability("dim");
+  if (wanted.foreground >= 0 && wanted.foreground != current_.foreground) {
+    AppendParameterized(out_, "setaf", wanted.foreground);
+  }
+  if (wanted.background >= 0 && wanted.background != current_.background) {
+    AppendParameterized(out_, "setab", wanted.background);
+  }
+  current_ = wanted;
+}
+
+void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount,
+                             std::optional<std::pair<int, int>> cursor) {
+  out_.clear();
+  const bool full = !valid_ || previous_.WidthCells() != grid.WidthCells() ||
+                    previous_.HeightCells() != grid.HeightCells() || colour != lastColour_;
+  lastColour_ = colour;
+  if (cursorShown_) {
+    out_ += Capability("civis");
+    cursorShown_ = false;
+  }
+  if (full) {
+    // Clear the screen; with back-colour-erase it clears to the background
+    // colour, and those cells need not be sent again.
+    out_ += Capability("sgr0");
+    current_ = Attributes{};
+    ScreenCell cleared;
+    if (colour && colours_ != ColourSupport::kNone && tigetflag("bce") == 1) {
+      cleared.style = CellStyle::kBackground;
+      AppendAttributes(AttributesFor(cleared, colour, levelCount));
+    }
+    out_ += Capability("clear");
+    previous_.Resize(grid.WidthCells(), grid.HeightCells());
+    for (int row = 0; row < grid.HeightCells(); ++row) {
+      for (int col = 0; col < grid.WidthCells(); ++col) previous_.At(col, row) = cleared;
+    }
+  }
+  // Step 1: runs of changed cells; a gap of a few unchanged cells is
+  // re-sent rather than paid for with a cursor move.
+  int cursorCol = -1, cursorRow = -1;
+  constexpr int kMaxGap = 4;
+  // With automatic margins but no deferred wrap, writing the bottom-right
+  // cell would scroll the screen: leave that one cell alone.
+  const bool avoidLastCell = tigetflag("am") == 1 && tigetflag("xenl") != 1;
+  for (int row = 0; row < grid.HeightCells(); ++row) {
+    int col = 0;
+    const int rowEnd = avoidLastCell && row == grid.HeightCells() - 1 ? grid.WidthCells() - 1
+                                                                      : grid.WidthCells();
+    while (col < rowEnd) {
+      const bool changed = !(grid.At(col, row) == previous_.At(col, row));
+      if (!changed) {
+        ++col;
+        continue;
+      }
+      int end = col + 1;  // extend over changed cells and short unchanged gaps
+      for (int gap = 0; end < rowEnd && gap <= kMaxGap; ++end) {
+        const bool next = !(grid.At(end, row) == previous_.At(end, row));
+        gap = next ? 0 : gap + 1;
+        if (gap > kMaxGap) {
+          end -= kMaxGap;
+          break;
+        }
+      }
+      if (cursorRow != row || cursorCol != col) AppendMove(col, row);
+      for (int c = col; c < end; ++c) {
+        const ScreenCell& cell = grid.At(c, row);
+        AppendAttributes(AttributesFor(cell, colour, levelCount));
+        out_ += cell.glyph;
+      }
+      cursorCol = end;
+      cursorRow = row;
+      col = end;
+    }
+  }
+  // Step 2: the cursor, shown only where text is being typed.
+  if (cursor) {
+    AppendMove(cursor->first, cursor->second);
+    out_ += Capability("cnorm");
+    cursorShown_ = true;
+  }
+  WriteAll();
+  previous_ = grid;
+  valid_ = true;
+}
+
+TerminalWriter::~TerminalWriter() {
+  out_ = Capability("sgr0");
+  out_ += Capability("cnorm");
+  WriteAll();
+}
+
+void TerminalWriter::WriteAll() {
+  lastFrameBytes_ = out_.size();
+  size_t sent = 0;
+  while (sent < out_.size()) {
+    const ssize_t n = write(outputFd_, out_.data() + sent, out_.size() - sent);
+    if (n > 0) {
+      sent += static_cast<size_t>(n);
+    } else if (n < 0 && errno != EINTR && errno != EAGAIN) {
+      return;  // the terminal is gone; the event loop will notice on input
+    }
+  }
+}
+
+}  // namespace termshade

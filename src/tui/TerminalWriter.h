@@ -1,0 +1,59 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "tui/ScreenGrid.h"
+
+namespace termshade {
+
+enum class ColourSupport { kNone, kEight, k256 };
+
+/// Sends a ScreenGrid to the terminal: only the cells that changed since the
+/// last frame, encoded with the terminal's own terminfo strings, in one
+/// write(). (ncurses' doupdate() would do the diff too, but Debian's ncurses
+/// 6.4 flushes at every cursor move: one write() per changed row.)
+class TerminalWriter {
+ public:
+  TerminalWriter(ColourSupport colours, int outputFd) : colours_(colours), outputFd_(outputFd) {}
+  /// Leaves default attributes and a visible cursor behind (ncurses does not
+  /// know what this writer set, so its endwin() would not undo it).
+  ~TerminalWriter();
+  TerminalWriter(const TerminalWriter&) = delete;
+  TerminalWriter& operator=(const TerminalWriter&) = delete;
+
+  /// Shows grid; cursor is (col, row) to show the cursor there, or nothing to hide it.
+  void Present(const ScreenGrid& grid, bool colour, int levelCount,
+               std::optional<std::pair<int, int>> cursor);
+  /// The next Present repaints every cell (after a resize, say).
+  void Invalidate() { valid_ = false; }
+  size_t LastFrameBytes() const { return lastFrameBytes_; }
+
+ private:
+  /// Terminal attributes as SGR state: the least that changes them is sent.
+  struct Attributes {
+    bool reverse = false;
+    bool bold = false;
+    bool dim = false;
+    int foreground = -1;  ///< -1: the terminal's default
+    int background = -1;
+    bool operator==(const Attributes&) const = default;
+  };
+  Attributes AttributesFor(const ScreenCell& cell, bool colour, int levelCount) const;
+  void AppendAttributes(const Attributes& wanted);
+  void AppendMove(int col, int row);
+  void WriteAll();
+
+  ColourSupport colours_;
+  int outputFd_;
+  ScreenGrid previous_;
+  bool valid_ = false;
+  bool cursorShown_ = true;
+  Attributes current_;
+  bool lastColour_ = false;
+  std::string out_;
+  size_t lastFrameBytes_ = 0;
+};
+
+}  // namespace termshade
