@@ -5,7 +5,7 @@
 namespace termshade {
 
 FaceErrorReport MeasureFaceError(const Scene& scene, const Camera& camera, bool cullBackFaces,
-                                 const CellBuffer& cells, double relativeDepthResolution) {
+                                 const CellBuffer& cells, const FaceErrorOptions& options) {
   const ReferenceRayCaster reference(scene, camera, cullBackFaces);
   FaceErrorReport report;
   for (int row = 0; row < cells.HeightCells(); ++row) {
@@ -18,12 +18,12 @@ FaceErrorReport MeasureFaceError(const Scene& scene, const Camera& camera, bool 
                             reference.DistanceToFaceEdgeCells(drawn, u, v) <= kEdgeBandCells;
       // Step 2: the two nearest surfaces closer than the method can tell apart.
       bool tooClose = false;
-      if (exact.faceNumber != 0 && exact.secondFaceNumber != 0) {
+      if (options.excludeCloseDepths && exact.faceNumber != 0 && exact.secondFaceNumber != 0) {
         const double wNear = 1.0 / exact.depth, wSecond = 1.0 / exact.secondDepth;
         const double tolerance = (reference.WGradientPerCell(exact.faceNumber) +
                                   reference.WGradientPerCell(exact.secondFaceNumber)) *
                                      kEdgeBandCells +
-                                 relativeDepthResolution * wNear;
+                                 options.relativeDepthResolution * wNear;
         tooClose = wNear - wSecond <= tolerance;
       }
       if (nearEdge || tooClose) {
