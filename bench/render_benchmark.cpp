@@ -2,6 +2,7 @@
 #include <benchmark/benchmark.h>
 
 #include "geometry/FitCamera.h"
+#include "geometry/ViewingTransform.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
 
@@ -35,6 +36,39 @@ void BM_Sphere200k(benchmark::State& state) {
   RenderTurntable(state, scene, Method::kZBuffer);
 }
 BENCHMARK(BM_Sphere200k)->Unit(benchmark::kMicrosecond);
+
+// The baseline of issue 4: a plain loop that only transforms every vertex,
+// then bounds and tests every triangle against the view, drawing nothing.
+void BM_PlainLoop200k(benchmark::State& state) {
+  static const Scene scene = PrepareScene(GenerateSphere(317, 317));
+  ViewParams view = DefaultView(scene.diagonalModelUnits);
+  std::vector<float> projected(scene.verticesWorld.size() * 2);
+  for (auto _ : state) {
+    view.theta += 0.01;
+    const Camera camera = FitCamera(scene, view, 160, 48, 2.0);
+    const Mat4 m = EyeFromWorld(camera.view);
+    const Projection& p = camera.projection;
+    for (size_t i = 0; i < scene.verticesWorld.size(); ++i) {
+      const Vec3 e = TransformPoint(m, scene.verticesWorld[i]);
+      const double w = -1.0 / e.z;
+      projected[2 * i] = static_cast<float>(p.cx + p.d * e.x * w);
+      projected[2 * i + 1] = static_cast<float>(p.cy - p.d / p.cellAspect * e.y * w);
+    }
+    int inView = 0;
+    for (const SceneTriangle& t : scene.triangles) {
+      float low[2] = {1e30F, 1e30F}, high[2] = {-1e30F, -1e30F};
+      for (uint32_t v : t.vertices) {
+        for (int k = 0; k < 2; ++k) {
+          low[k] = std::min(low[k], projected[2 * v + k]);
+          high[k] = std::max(high[k], projected[2 * v + k]);
+        }
+      }
+      inView += high[0] >= 0 && low[0] < 160 && high[1] >= 0 && low[1] < 48 ? 1 : 0;
+    }
+    benchmark::DoNotOptimize(inView);
+  }
+}
+BENCHMARK(BM_PlainLoop200k)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace termshade

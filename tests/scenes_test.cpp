@@ -54,7 +54,7 @@ TEST(Scenes, FunctionSurfaceIsTwoSided) {
   const Scene surface = test::LoadScene("data/surface.dat");
   ASSERT_EQ(surface.FaceCount() % 2, 0U);
   for (size_t f = 0; f + 1 < surface.FaceCount(); f += 2) {
-    const Vec3 n = surface.faceNormalsWorld[f], m = surface.faceNormalsWorld[f + 1];
+    const Vec3 n = surface.facePlanesWorld[f].normal, m = surface.facePlanesWorld[f + 1].normal;
     EXPECT_NEAR(Dot(n, m), -1.0, 1e-12);
   }
   EXPECT_NEAR(SignedVolume(surface), 0.0, 1e-9);

@@ -23,7 +23,7 @@ int UsageError(const std::string& message) {
 int RunRenderCommand(const RenderCommandOptions& options) {
   // Step 1: options that the parser could not check alone.
   const auto method = ParseMethod(options.method);
-  if (!method) return UsageError("--method must be zbuffer, painter, cull or wire");
+  if (!method) return UsageError("--method must be zbuffer, painter, cull, wire or auto");
   const auto shade = ParseShadeMode(options.shade);
   if (!shade) return UsageError("--shade must be contrast or lambert");
   const auto format = ParseFrameFormat(options.format);

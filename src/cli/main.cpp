@@ -7,6 +7,7 @@
 #include <regex>
 #include <unistd.h>
 
+#include "MethodsBench.h"
 #include "TerminalBench.h"
 #include "cli/GenerateCommand.h"
 #include "cli/RenderCommand.h"
@@ -70,8 +71,9 @@ void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
 }
 
 void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
-  command.add_option("--method", options.method, "zbuffer (default), painter, cull or wire")
-      ->check(CLI::IsMember({"zbuffer", "painter", "cull", "wire"}));
+  command.add_option("--method", options.method,
+                     "zbuffer (default), painter, cull, wire, or auto (the cheapest exact one)")
+      ->check(CLI::IsMember({"zbuffer", "painter", "cull", "wire", "auto"}));
   command.add_option("--shade", options.shade, "contrast (default) or lambert")
       ->check(CLI::IsMember({"contrast", "lambert"}));
   command.add_option("--ramp", options.ramp, "shade characters from dark to bright (default .:-=+*#%@)");
@@ -155,11 +157,24 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(0.5, 600.0));
   terminalCommand->add_flag("!--no-strace", terminalBench.traceWrites, "do not count write() calls");
 
+  termshade::MethodsBenchOptions methodsBench;
+  CLI::App* methodsCommand = benchCommand->add_subcommand(
+      "methods", "speed against error of every method on the same frames (table, CSV, SVG plot)");
+  methodsCommand->add_option("--frames", methodsBench.frames, "turntable frames per scene (default 8)")
+      ->check(CLI::Range(1, 360));
+  methodsCommand->add_option("--seconds", methodsBench.secondsPerCase,
+                             "timing budget per method and scene (default 0.3)")
+      ->check(CLI::Range(0.01, 60.0));
+  methodsCommand->add_option("--csv", methodsBench.csvPath, "CSV output (default bench-methods.csv)");
+  methodsCommand->add_option("--svg", methodsBench.svgPath, "plot output (default bench-methods.svg)");
+  methodsCommand->add_option("--data", methodsBench.dataDirectory, "the scenes' directory (default data)");
+
   bool done = false;
   const int parseCode = ParseOrExit(app, argc, argv, done);
   if (done) return parseCode;
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(sceneName, generateOutput);
+  if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
   if (terminalCommand->parsed()) {
     terminalBench.viewerPath = "/proc/self/exe";
     char path[4096];

@@ -1,5 +1,6 @@
 #include "geometry/RayCast.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -46,8 +47,8 @@ ReferenceRayCaster::ReferenceRayCaster(const Scene& scene, const Camera& camera,
     for (uint32_t v : scene.mesh.Face(f)) {
       face.cornersEye.push_back(TransformPoint(eyeFromWorld, scene.verticesWorld[v]));
     }
-    const Vec3 nWorld = scene.faceNormalsWorld[f];
-    const bool front = Dot(nWorld, eyeWorld) > scene.facePlaneOffsets[f];
+    const Vec3 nWorld = scene.facePlanesWorld[f].normal;
+    const bool front = scene.facePlanesWorld[f].FacesPoint(eyeWorld);
     face.active = (front || !cullBackFaces) && nWorld != Vec3{} && IsFinite(nWorld);
     if (!face.active) continue;
     face.normalEye = TransformDirection(eyeFromWorld, nWorld);
@@ -86,13 +87,52 @@ bool ReferenceRayCaster::HitFace(const FacePolygon& face, Vec3 rayEye, double& d
   return depth > 0.0;
 }
 
+void ReferenceRayCaster::BinFaces(int widthCells, int heightCells) {
+  binWidth_ = widthCells;
+  binHeight_ = heightCells;
+  std::vector<std::vector<uint32_t>> bins(static_cast<size_t>(widthCells) * heightCells);
+  for (size_t f = 0; f < faces_.size(); ++f) {
+    const FacePolygon& face = faces_[f];
+    if (!face.active || face.projectedU.empty()) continue;
+    const auto [uLow, uHigh] = std::minmax_element(face.projectedU.begin(), face.projectedU.end());
+    const auto [vLow, vHigh] = std::minmax_element(face.projectedV.begin(), face.projectedV.end());
+    // One cell of slack: rays sit anywhere in their cell, outlines are straight.
+    const int col0 = static_cast<int>(std::max(0.0, std::floor(*uLow) - 1));
+    const int col1 = static_cast<int>(std::min(widthCells - 1.0, std::floor(*uHigh) + 1));
+    const int row0 = static_cast<int>(std::max(0.0, std::floor(*vLow) - 1));
+    const int row1 = static_cast<int>(std::min(heightCells - 1.0, std::floor(*vHigh) + 1));
+    for (int row = row0; row <= row1; ++row) {
+      for (int col = col0; col <= col1; ++col) {
+        bins[static_cast<size_t>(row) * widthCells + col].push_back(static_cast<uint32_t>(f));
+      }
+    }
+  }
+  binStarts_.assign(1, 0);
+  binFaces_.clear();
+  for (const auto& bin : bins) {
+    binFaces_.insert(binFaces_.end(), bin.begin(), bin.end());
+    binStarts_.push_back(static_cast<uint32_t>(binFaces_.size()));
+  }
+}
+
 RaySample ReferenceRayCaster::Cast(double uCells, double vCells) const {
   const Projection& p = camera_.projection;
   const Vec3 rayEye{uCells - p.cx, (p.cy - vCells) * p.cellAspect, -p.d};
   RaySample sample;
   double nearest = std::numeric_limits<double>::infinity();
   double second = nearest;
-  for (size_t f = 0; f < faces_.size(); ++f) {
+  // Step 1: the candidate faces: the cell's bin, or all of them.
+  const uint32_t* candidates = nullptr;
+  size_t candidateCount = faces_.size();
+  const int col = static_cast<int>(std::floor(uCells)), row = static_cast<int>(std::floor(vCells));
+  if (binWidth_ > 0 && col >= 0 && row >= 0 && col < binWidth_ && row < binHeight_) {
+    const size_t bin = static_cast<size_t>(row) * binWidth_ + col;
+    candidates = binFaces_.data() + binStarts_[bin];
+    candidateCount = binStarts_[bin + 1] - binStarts_[bin];
+  }
+  // Step 2: the nearest two hits.
+  for (size_t k = 0; k < candidateCount; ++k) {
+    const size_t f = candidates != nullptr ? candidates[k] : k;
     double depth = 0.0;
     if (!faces_[f].active || !HitFace(faces_[f], rayEye, depth)) continue;
     const auto number = static_cast<uint32_t>(f + 1);

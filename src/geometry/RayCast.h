@@ -23,6 +23,10 @@ class ReferenceRayCaster {
  public:
   ReferenceRayCaster(const Scene& scene, const Camera& camera, bool cullBackFaces);
 
+  /// Sorts faces into the cells their outlines' bounding boxes touch, so a
+  /// cast tests only the faces of its cell. Casts outside the grid test all.
+  void BinFaces(int widthCells, int heightCells);
+
   RaySample Cast(double uCells, double vCells) const;
 
   /// Distance in cells from (u, v) to the nearest projected edge of a face
@@ -47,6 +51,10 @@ class ReferenceRayCaster {
 
   Camera camera_;
   std::vector<FacePolygon> faces_;
+  int binWidth_ = 0;
+  int binHeight_ = 0;
+  std::vector<uint32_t> binStarts_;  ///< per cell, into binFaces_
+  std::vector<uint32_t> binFaces_;
 };
 
 }  // namespace termshade

@@ -45,8 +45,7 @@ void AddFaceGeometry(Scene& scene, size_t face, std::vector<Vec3>& cornersScratc
   Vec3 mean;
   for (const Vec3& p : cornersScratch) mean = mean + p;
   mean = mean * (1.0 / static_cast<double>(std::max<size_t>(1, cornersScratch.size())));
-  scene.faceNormalsWorld.push_back(normal);
-  scene.facePlaneOffsets.push_back(finite ? Dot(normal, mean) : 0.0);
+  scene.facePlanesWorld.push_back({normal, finite ? Dot(normal, mean) : 0.0});
 
   trianglesScratch.clear();
   if (finite) TriangulatePolygon(cornersScratch, trianglesScratch);
@@ -78,6 +77,46 @@ void CollectEdges(Scene& scene) {
   for (const auto& segment : mesh.segments) scene.edges.push_back({segment, UINT32_MAX});
 }
 
+// Closed (every directed edge has its reverse in exactly one other face),
+// connected, and convex at every edge (each face's corners lie on or behind
+// its neighbours' planes): a convex solid, where facing decides visibility.
+bool IsConvexClosedSolid(const Scene& scene) {
+  const Mesh& mesh = scene.mesh;
+  const size_t faceCount = mesh.FaceCount();
+  if (faceCount < 4 || scene.triangles.empty()) return false;
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> faceOfEdge;
+  for (uint32_t f = 0; f < faceCount; ++f) {
+    const auto corners = mesh.Face(f);
+    for (size_t i = 0; i < corners.size(); ++i) {
+      if (!faceOfEdge.try_emplace({corners[i], corners[(i + 1) % corners.size()]}, f).second) {
+        return false;  // an edge used twice the same way
+      }
+    }
+  }
+  std::vector<uint32_t> component(faceCount);
+  for (uint32_t f = 0; f < faceCount; ++f) component[f] = f;
+  auto root = [&](uint32_t f) {
+    while (component[f] != f) f = component[f] = component[component[f]];
+    return f;
+  };
+  const double tolerance = 1e-9 * std::max(1.0, scene.diagonalModelUnits);
+  for (const auto& [edge, f] : faceOfEdge) {
+    const auto twin = faceOfEdge.find({edge.second, edge.first});
+    if (twin == faceOfEdge.end()) return false;
+    const uint32_t g = twin->second;
+    component[root(f)] = root(g);
+    const Vec3 n = scene.facePlanesWorld[f].normal;
+    if (n == Vec3{}) return false;
+    for (uint32_t v : mesh.Face(g)) {
+      if (Dot(n, scene.verticesWorld[v]) - scene.facePlanesWorld[f].offset > tolerance) return false;
+    }
+  }
+  for (uint32_t f = 0; f < faceCount; ++f) {
+    if (root(f) != root(0)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 Scene PrepareScene(Mesh mesh) {
@@ -106,6 +145,7 @@ Scene PrepareScene(Mesh mesh) {
     AddFaceGeometry(scene, face, cornersScratch, trianglesScratch);
   }
   CollectEdges(scene);
+  scene.convexClosedSolid = IsConvexClosedSolid(scene);
   return scene;
 }
 

@@ -16,6 +16,15 @@ struct SceneTriangle {
   uint32_t face = 0;
 };
 
+/// A face's plane n . p = offset: the unit Newell normal (zero when the face
+/// is degenerate) through the mean of its corners.
+struct FacePlane {
+  Vec3 normal;
+  double offset = 0.0;
+  /// Front-facing as seen from pWorld: strictly in front of the plane (h < 0 in eye space).
+  bool FacesPoint(Vec3 pWorld) const { return Dot(normal, pWorld) > offset; }
+};
+
 /// A drawable line for wire-frame mode; face is the first face that has it
 /// (or UINT32_MAX for a free segment).
 struct SceneEdge {
@@ -30,15 +39,17 @@ struct Scene {
   Mat4 worldFromFile;
   std::vector<Vec3> verticesWorld;
   std::vector<SceneTriangle> triangles;
-  std::vector<Vec3> faceNormalsWorld;     ///< unit Newell normals (zero when degenerate)
-  std::vector<double> facePlaneOffsets;   ///< h with n . p = h for the face's mean corner, world
+  std::vector<FacePlane> facePlanesWorld;  ///< per face, world space
   std::vector<uint32_t> faceTriangleStarts;  ///< FaceCount() + 1 entries into triangles
   std::vector<SceneEdge> edges;
   Mesh mesh;                    ///< the source model, for exact references and export
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;    ///< of the smallest sphere about the origin holding every vertex
+  /// One closed, consistently oriented, connected surface with every edge
+  /// convex: back-face culling alone draws it exactly (the `auto` method).
+  bool convexClosedSolid = false;
 
-  size_t FaceCount() const { return faceNormalsWorld.size(); }
+  size_t FaceCount() const { return facePlanesWorld.size(); }
 };
 
 /// Centers, triangulates and measures a mesh. Faces with non-finite

@@ -155,7 +155,8 @@ Mesh SphereAndCone() {
   return mesh;
 }
 
-// z = sin(x) cos(y) over [-pi, pi]^2, every quad written in both orders (a sheet).
+// z = sin(x) cos(y) over [-pi, pi]^2 as planar triangles (the grid's quads
+// would not be planar), every one written in both orders: a two-sided sheet.
 Mesh FunctionSurface() {
   Mesh mesh;
   constexpr int kCells = 20;
@@ -169,8 +170,11 @@ Mesh FunctionSurface() {
   auto at = [](int i, int j) { return static_cast<uint32_t>(i * (kCells + 1) + j); };
   for (int i = 0; i < kCells; ++i) {
     for (int j = 0; j < kCells; ++j) {
-      mesh.AddFace(std::array<uint32_t, 4>{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-      mesh.AddFace(std::array<uint32_t, 4>{at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
+      for (const auto& t : {std::array<uint32_t, 3>{at(i, j), at(i + 1, j), at(i + 1, j + 1)},
+                            std::array<uint32_t, 3>{at(i, j), at(i + 1, j + 1), at(i, j + 1)}}) {
+        mesh.AddFace(t);
+        mesh.AddFace(std::array<uint32_t, 3>{t[0], t[2], t[1]});
+      }
     }
   }
   return mesh;

@@ -6,7 +6,8 @@ namespace termshade {
 
 FaceErrorReport MeasureFaceError(const Scene& scene, const Camera& camera, bool cullBackFaces,
                                  const CellBuffer& cells, const FaceErrorOptions& options) {
-  const ReferenceRayCaster reference(scene, camera, cullBackFaces);
+  ReferenceRayCaster reference(scene, camera, cullBackFaces);
+  reference.BinFaces(cells.WidthCells(), cells.HeightCells());
   FaceErrorReport report;
   for (int row = 0; row < cells.HeightCells(); ++row) {
     for (int col = 0; col < cells.WidthCells(); ++col) {

@@ -6,11 +6,12 @@
 namespace termshade {
 namespace {
 
-constexpr std::array<std::pair<Method, std::string_view>, 4> kMethodNames{{
+constexpr std::array<std::pair<Method, std::string_view>, 5> kMethodNames{{
     {Method::kZBuffer, "zbuffer"},
     {Method::kPainter, "painter"},
     {Method::kCull, "cull"},
     {Method::kWire, "wire"},
+    {Method::kAuto, "auto"},
 }};
 
 constexpr std::array<std::pair<ShadeMode, std::string_view>, 2> kShadeNames{{

@@ -15,6 +15,26 @@ RasterVertex ToRaster(const CellPoint& p) {
   return {SnapToFixed(p.u), SnapToFixed(p.v), static_cast<float>(p.w)};
 }
 
+// The float-geometry variant: the same transform and projection in float.
+Vec3 TransformInFloat(const Mat4& eyeFromWorld, Vec3 pWorld) {
+  const auto& m = eyeFromWorld.m;
+  const auto x = static_cast<float>(pWorld.x), y = static_cast<float>(pWorld.y),
+             z = static_cast<float>(pWorld.z);
+  auto row = [&](int r) {
+    return static_cast<float>(m[r * 4]) * x + static_cast<float>(m[r * 4 + 1]) * y +
+           static_cast<float>(m[r * 4 + 2]) * z + static_cast<float>(m[r * 4 + 3]);
+  };
+  return {row(0), row(1), row(2)};
+}
+
+RasterVertex ProjectInFloat(const Projection& proj, Vec3 pEye) {
+  const float w = -1.0F / static_cast<float>(pEye.z);
+  const float u = static_cast<float>(proj.cx) + static_cast<float>(proj.d) * static_cast<float>(pEye.x) * w;
+  const float v = static_cast<float>(proj.cy) -
+                  static_cast<float>(proj.d / proj.cellAspect) * static_cast<float>(pEye.y) * w;
+  return {SnapToFixed(u), SnapToFixed(v), w};
+}
+
 // The near plane sits a tiny, scale-relative distance in front of the eye.
 double NearDistance(const Scene& scene) {
   return 1e-6 * (scene.diagonalModelUnits > 0.0 ? scene.diagonalModelUnits : 1.0);
@@ -22,66 +42,149 @@ double NearDistance(const Scene& scene) {
 
 }  // namespace
 
+Method ResolvedMethod(const Scene& scene, Method method) {
+  if (method != Method::kAuto) return method;
+  return scene.convexClosedSolid ? Method::kCull : Method::kZBuffer;
+}
+
 RenderStats Renderer::Render(const Scene& scene, const Camera& camera,
                              const RenderOptions& options, DepthBuffer& depth, CellBuffer& cells) {
+  if (options.variant.samplesPerAxis > 1 && options.method != Method::kWire) {
+    return RenderSupersampled(scene, camera, options, depth, cells);
+  }
+  RenderOptions resolved = options;
+  resolved.method = ResolvedMethod(scene, options.method);
   cells.Clear();
   depth.Clear();
   clipPlanes_ = MakeViewClipPlanes(camera.projection, NearDistance(scene));
-  TransformVertices(scene, camera);
-  ClassifyFaces(scene, camera, options);
+  eyeWorld_ = EyePositionWorld(camera.view);
+  TransformVertices(scene, camera, resolved.variant, resolved.method == Method::kPainter);
   RenderStats stats;
-  if (options.method == Method::kWire) {
-    stats.trianglesDrawn = DrawEdges(scene, camera, options, depth, cells);
+  if (resolved.method == Method::kWire) {
+    stats.trianglesDrawn = DrawEdges(scene, camera, resolved, depth, cells);
   } else {
-    stats.trianglesDrawn = DrawSurfaces(scene, camera, options, depth, cells);
+    stats.trianglesDrawn = DrawSurfaces(scene, camera, resolved, depth, cells);
   }
-  stats.facesVisible = ShadeCells(scene, options, cells);
+  stats.facesVisible = ShadeCells(scene, resolved, cells);
   return stats;
 }
 
-void Renderer::TransformVertices(const Scene& scene, const Camera& camera) {
-  eyeFromWorld_ = EyeFromWorld(camera.view);
-  const Mat4& eyeFromWorld = eyeFromWorld_;
-  const Projection& proj = camera.projection;
+// k x k samples per cell: the frame at k times the resolution (the camera
+// scaled by k), then each cell's glyph from its samples' mean intensity
+// (background counts as 0) and its face from the most samples.
+RenderStats Renderer::RenderSupersampled(const Scene& scene, const Camera& camera,
+                                         const RenderOptions& options, DepthBuffer& depth,
+                                         CellBuffer& cells) {
+  const int k = options.variant.samplesPerAxis;
+  Camera fine = camera;
+  fine.projection.d *= k;
+  fine.projection.cx *= k;
+  fine.projection.cy *= k;
+  fineCells_.Resize(cells.WidthCells() * k, cells.HeightCells() * k);
+  fineDepth_.Resize(cells.WidthCells() * k, cells.HeightCells() * k);
+  RenderOptions single = options;
+  single.variant.samplesPerAxis = 1;
+  const RenderStats stats = Render(scene, fine, single, fineDepth_, fineCells_);
+  cells.Clear();
+  depth.Clear();
+  const double levelCount = options.ramp.LevelCount();
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    for (int col = 0; col < cells.WidthCells(); ++col) {
+      double intensitySum = 0.0;
+      int covered = 0;
+      uint32_t bestFace = 0;
+      int bestCount = 0;
+      float nearest = 0.0F;
+      for (int j = 0; j < k; ++j) {
+        for (int i = 0; i < k; ++i) {
+          const size_t index = fineCells_.Index(col * k + i, row * k + j);
+          const uint32_t face = fineCells_.FaceNumbers()[index];
+          if (face == 0) continue;
+          ++covered;
+          intensitySum += (fineCells_.Levels()[index] + 0.5) / levelCount;
+          nearest = std::max(nearest, fineDepth_.At(index));
+          int count = 0;  // samples of this face in the cell (k <= 4: cheap)
+          for (int jj = 0; jj < k; ++jj) {
+            for (int ii = 0; ii < k; ++ii) {
+              count += fineCells_.FaceNumber(col * k + ii, row * k + jj) == face ? 1 : 0;
+            }
+          }
+          if (count > bestCount || (count == bestCount && face < bestFace)) {
+            bestFace = face;
+            bestCount = count;
+          }
+        }
+      }
+      if (covered == 0) continue;
+      const size_t index = cells.Index(col, row);
+      const int level = options.ramp.LevelFor(intensitySum / (k * k));
+      cells.FaceNumbers()[index] = bestFace;
+      cells.Levels()[index] = static_cast<int16_t>(level);
+      cells.Glyphs()[index] = options.ramp.Glyph(level);
+      depth.At(index) = nearest;
+    }
+  }
+  return stats;
+}
+
+template <bool kFloatGeometry>
+float Renderer::ProjectVertices(const Scene& scene, const Projection& proj, bool needEyeZ) {
   const size_t count = scene.verticesWorld.size();
-  zEye_.resize(count);
-  rasterVertices_.resize(count);
-  outCodes_.resize(count);
   const double vScale = proj.d / proj.cellAspect;
   // A vertex this far inside every clip plane is inside for certain, whatever
   // the rounding; only the others need the exact out-codes.
   const double nearZ = 2.0 * -clipPlanes_[0].offset;
   const double xLimit = 0.5 * (kClipRangeCells - proj.cx), yLimit = 0.5 * (kClipRangeCells - proj.cy);
+  // Locals, not members: the stores below (zEye_ is double) could otherwise
+  // alias the matrix and force it to be reloaded for every vertex.
+  const Mat4 m = eyeFromWorld_;
+  const double d = proj.d, cx = proj.cx, cy = proj.cy;
+  const Vec3* const verticesWorld = scene.verticesWorld.data();
+  RasterVertex* const raster = rasterVertices_.data();
+  uint8_t* const codes = outCodes_.data();
+  double* const eyeZ = needEyeZ ? zEye_.data() : nullptr;
+  float maxW = 0.0F;
   for (size_t i = 0; i < count; ++i) {
-    const Vec3 pEye = TransformPoint(eyeFromWorld, scene.verticesWorld[i]);
-    zEye_[i] = pEye.z;
+    const Vec3 pWorld = verticesWorld[i];
+    const Vec3 pEye = kFloatGeometry ? TransformInFloat(m, pWorld) : TransformPoint(m, pWorld);
+    if (eyeZ != nullptr) eyeZ[i] = pEye.z;
     // ProjectToCell, inlined: u = cx + d x w, v = cy - d y w / a with w = -1/z.
     const double w = -1.0 / pEye.z;
-    const double xCells = proj.d * pEye.x * w, yCells = vScale * pEye.y * w;
+    const double xCells = d * pEye.x * w, yCells = vScale * pEye.y * w;
     if (pEye.z <= -nearZ && std::fabs(xCells) <= xLimit && std::fabs(yCells) <= yLimit) {
-      outCodes_[i] = 0;
-      rasterVertices_[i] = {SnapToFixed(proj.cx + xCells), SnapToFixed(proj.cy - yCells),
-                            static_cast<float>(w)};
+      codes[i] = 0;
+      raster[i] = kFloatGeometry
+                      ? ProjectInFloat(proj, pEye)
+                      : RasterVertex{SnapToFixed(cx + xCells), SnapToFixed(cy - yCells),
+                                     static_cast<float>(w)};
+      maxW = std::max(maxW, raster[i].w);
       continue;
     }
     const unsigned code = OutCode(clipPlanes_, pEye);
-    outCodes_[i] = static_cast<uint8_t>(code);
-    rasterVertices_[i] = code == 0 ? ToRaster(ProjectToCell(proj, pEye)) : RasterVertex{};
+    codes[i] = static_cast<uint8_t>(code);
+    raster[i] = code == 0 ? ToRaster(ProjectToCell(proj, pEye)) : RasterVertex{};
+    maxW = std::max(maxW, raster[i].w);
   }
+  return maxW;
 }
 
-void Renderer::ClassifyFaces(const Scene& scene, const Camera& camera,
-                             const RenderOptions& options) {
-  const Vec3 eyeWorld = EyePositionWorld(camera.view);
-  const size_t faceCount = scene.FaceCount();
-  faceFront_.resize(faceCount);
-  faceDrawn_.resize(faceCount);
-  for (size_t f = 0; f < faceCount; ++f) {
-    // Front-facing: the eye is strictly in front of the face's plane (h < 0 in eye space).
-    const bool front = Dot(scene.faceNormalsWorld[f], eyeWorld) > scene.facePlaneOffsets[f];
-    faceFront_[f] = front;
-    faceDrawn_[f] = front || !options.cullBackFaces;
-  }
+void Renderer::TransformVertices(const Scene& scene, const Camera& camera,
+                                 const RenderVariant& variant, bool needEyeZ) {
+  eyeFromWorld_ = EyeFromWorld(camera.view);
+  const Projection& proj = camera.projection;
+  const size_t count = scene.verticesWorld.size();
+  zEye_.resize(needEyeZ ? count : 0);
+  rasterVertices_.resize(count);
+  outCodes_.resize(count);
+  maxW_ = variant.floatGeometry ? ProjectVertices<true>(scene, proj, needEyeZ)
+                                : ProjectVertices<false>(scene, proj, needEyeZ);
+  depthEncoding_ = {variant.depthFormat, maxW_ > 0.0F ? 65535.0F / maxW_ : 1.0F};
+  scanline_ = variant.scanline;
+}
+
+bool Renderer::FaceIsFront(const Scene& scene, uint32_t face) const {
+  // The eye strictly in front of the face's plane (h < 0 in eye space).
+  return scene.facePlanesWorld[face].FacesPoint(eyeWorld_);
 }
 
 int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t triangle,
@@ -95,9 +198,8 @@ int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t tr
     const RasterVertex& a = rasterVertices_[t.vertices[0]];
     const RasterVertex& b = rasterVertices_[t.vertices[1]];
     const RasterVertex& c = rasterVertices_[t.vertices[2]];
-    if (MayCoverSample(a, b, c, cells.WidthCells(), cells.HeightCells())) {
-      RasterizeTriangle(a, b, c, faceNumber, rule, depth, cells);
-    }
+    if (!MayCoverSample(a, b, c, cells.WidthCells(), cells.HeightCells())) return 0;
+    Rasterize(a, b, c, faceNumber, rule, depth, cells);
     return 1;
   }
   if ((codes[0] & codes[1] & codes[2]) != 0) return 0;
@@ -115,24 +217,35 @@ int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t tr
     projected[i] = ToRaster(ProjectToCell(camera.projection, clipped.corners[i]));
   }
   for (size_t i = 1; i + 1 < clipped.count; ++i) {
-    RasterizeTriangle(projected[0], projected[i], projected[i + 1], faceNumber, rule, depth,
-                      cells);
+    Rasterize(projected[0], projected[i], projected[i + 1], faceNumber, rule, depth, cells);
   }
   return 1;
+}
+
+void Renderer::Rasterize(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                         uint32_t faceNumber, DepthRule rule, DepthBuffer& depth,
+                         CellBuffer& cells) const {
+  if (scanline_) {
+    RasterizeTriangleScanline(a, b, c, faceNumber, rule, depth, cells);
+  } else {
+    RasterizeTriangle(a, b, c, faceNumber, rule, depth, cells, depthEncoding_);
+  }
 }
 
 int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera,
                            const RenderOptions& options, DepthBuffer& depth, CellBuffer& cells) {
   int drawn = 0;
+  const bool cull = options.cullBackFaces;
+  // Face by face: a face behind its plane is skipped whole, its triangles never read.
   if (options.method == Method::kPainter) {
-    const auto triangleCount = static_cast<uint32_t>(scene.triangles.size());
     // Textbook painter: far to near by the sum of the vertices' eye z.
     painterOrder_.clear();
-    for (uint32_t i = 0; i < triangleCount; ++i) {
-      const SceneTriangle& t = scene.triangles[i];
-      if (!faceDrawn_[t.face]) continue;
-      const double zSum = zEye_[t.vertices[0]] + zEye_[t.vertices[1]] + zEye_[t.vertices[2]];
-      painterOrder_.emplace_back(zSum, i);
+    for (uint32_t f = 0; f < scene.FaceCount(); ++f) {
+      if (cull && !FaceIsFront(scene, f)) continue;
+      for (uint32_t i = scene.faceTriangleStarts[f]; i < scene.faceTriangleStarts[f + 1]; ++i) {
+        const SceneTriangle& t = scene.triangles[i];
+        painterOrder_.emplace_back(zEye_[t.vertices[0]] + zEye_[t.vertices[1]] + zEye_[t.vertices[2]], i);
+      }
     }
     std::sort(painterOrder_.begin(), painterOrder_.end());
     for (const auto& [zSum, i] : painterOrder_) {
@@ -142,11 +255,29 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera,
   }
   const DepthRule rule =
       options.method == Method::kZBuffer ? DepthRule::kNearestWins : DepthRule::kOverwrite;
-  // Face by face, so culled faces' triangles are never even loaded.
-  for (size_t f = 0; f < scene.FaceCount(); ++f) {
-    if (!faceDrawn_[f]) continue;
-    for (uint32_t i = scene.faceTriangleStarts[f]; i < scene.faceTriangleStarts[f + 1]; ++i) {
-      drawn += DrawTriangle(scene, camera, i, rule, depth, cells);
+  // The hot loop: plain pointers, the in-view case inline, the rest out of line.
+  const FacePlane* const planes = scene.facePlanesWorld.data();
+  const uint32_t* const starts = scene.faceTriangleStarts.data();
+  const SceneTriangle* const triangles = scene.triangles.data();
+  const RasterVertex* const raster = rasterVertices_.data();
+  const uint8_t* const codes = outCodes_.data();
+  const Vec3 eyeWorld = eyeWorld_;
+  const int width = cells.WidthCells(), height = cells.HeightCells();
+  const uint32_t faceCount = static_cast<uint32_t>(scene.FaceCount());
+  for (uint32_t f = 0; f < faceCount; ++f) {
+    if (cull && !planes[f].FacesPoint(eyeWorld)) continue;
+    for (uint32_t i = starts[f]; i < starts[f + 1]; ++i) {
+      const auto& v = triangles[i].vertices;
+      if ((codes[v[0]] | codes[v[1]] | codes[v[2]]) != 0) {
+        drawn += DrawTriangle(scene, camera, i, rule, depth, cells);
+        continue;
+      }
+      const RasterVertex& a = raster[v[0]];
+      const RasterVertex& b = raster[v[1]];
+      const RasterVertex& c = raster[v[2]];
+      if (!MayCoverSample(a, b, c, width, height)) continue;
+      Rasterize(a, b, c, f + 1, rule, depth, cells);
+      ++drawn;
     }
   }
   return drawn;
@@ -189,7 +320,7 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
   double minDot = INFINITY, maxDot = -INFINITY;
   seenSunDots_.clear();
   for (uint32_t f : seenFaces_) {
-    const double dot = Dot(scene.faceNormalsWorld[f], sunWorld) * (faceFront_[f] ? 1.0 : -1.0);
+    const double dot = Dot(scene.facePlanesWorld[f].normal, sunWorld) * (FaceIsFront(scene, f) ? 1.0 : -1.0);
     seenSunDots_.push_back(dot);
     minDot = std::min(minDot, dot);
     maxDot = std::max(maxDot, dot);

@@ -16,9 +16,12 @@ namespace termshade {
 
 /// What one frame drew.
 struct RenderStats {
-  int trianglesDrawn = 0;  ///< triangles sent to the rasterizer (after culling and clipping)
+  int trianglesDrawn = 0;  ///< triangles rasterized: facing the eye (or culling off), near a sample
   int facesVisible = 0;    ///< distinct faces seen in at least one cell
 };
+
+/// The method actually drawn: auto becomes cull or zbuffer for the scene.
+Method ResolvedMethod(const Scene& scene, Method method);
 
 /// The one geometry pipeline, world -> eye -> cells, for every front end.
 /// Keeps per-frame scratch arrays between frames, so a steady frame loop
@@ -30,8 +33,15 @@ class Renderer {
                      DepthBuffer& depth, CellBuffer& cells);
 
  private:
-  void TransformVertices(const Scene& scene, const Camera& camera);
-  void ClassifyFaces(const Scene& scene, const Camera& camera, const RenderOptions& options);
+  RenderStats RenderSupersampled(const Scene& scene, const Camera& camera,
+                                 const RenderOptions& options, DepthBuffer& depth, CellBuffer& cells);
+  void TransformVertices(const Scene& scene, const Camera& camera, const RenderVariant& variant,
+                         bool needEyeZ);
+  template <bool kFloatGeometry>
+  float ProjectVertices(const Scene& scene, const Projection& proj, bool needEyeZ);
+  bool FaceIsFront(const Scene& scene, uint32_t face) const;
+  void Rasterize(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                 uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells) const;
   int DrawTriangle(const Scene& scene, const Camera& camera, uint32_t triangle, DepthRule rule,
                    DepthBuffer& depth, CellBuffer& cells);
   int DrawSurfaces(const Scene& scene, const Camera& camera, const RenderOptions& options,
@@ -42,11 +52,15 @@ class Renderer {
 
   ViewClipPlanes clipPlanes_{};
   Mat4 eyeFromWorld_;
+  Vec3 eyeWorld_;
+  DepthEncoding depthEncoding_;
+  bool scanline_ = false;
+  float maxW_ = 0.0F;
+  CellBuffer fineCells_;   ///< supersampled variants: the frame at k x k samples a cell
+  DepthBuffer fineDepth_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
   std::vector<uint8_t> outCodes_;
-  std::vector<uint8_t> faceFront_;      ///< per face: the eye is in front of its plane
-  std::vector<uint8_t> faceDrawn_;      ///< per face: drawn this frame (front, or culling off)
   std::vector<int16_t> faceLevels_;     ///< per face: ramp level; -1 between frames
   std::vector<uint32_t> seenFaces_;     ///< faces seen in some cell this frame
   std::vector<double> seenSunDots_;     ///< their n.s, n turned towards the eye

@@ -1,6 +1,8 @@
 #include "raster/TriangleRasterizer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 
 #include "raster/FixedPoint.h"
 
@@ -34,10 +36,63 @@ void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
   last = std::min(limit - 1, (high - kFixedHalf) >> kSubCellBits);
 }
 
+
+// Depth at a sample from the three edge weights, per format.
+template <DepthFormat kFormat>
+struct DepthInterpolator {
+  float k0, k1, k2, scale;
+  DepthInterpolator(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+                    int64_t area, const DepthEncoding& encoding) {
+    const float invArea = 1.0F / static_cast<float>(area);
+    scale = encoding.fixedScale;
+    if constexpr (kFormat == DepthFormat::kLinearZ) {
+      k0 = invArea / v0.w;  // z = 1 / w at the vertices, interpolated as if linear
+      k1 = invArea / v1.w;
+      k2 = invArea / v2.w;
+    } else {
+      k0 = v0.w * invArea;
+      k1 = v1.w * invArea;
+      k2 = v2.w * invArea;
+    }
+  }
+  float operator()(int64_t e12, int64_t e20, int64_t e01) const {
+    const float value = static_cast<float>(e12) * k0 + static_cast<float>(e20) * k1 +
+                        static_cast<float>(e01) * k2;
+    if constexpr (kFormat == DepthFormat::kLinearZ) return 1.0F / value;
+    if constexpr (kFormat == DepthFormat::kFixed16InverseZ) {
+      return std::min(65535.0F, std::floor(value * scale)) / scale;
+    }
+    return value;
+  }
+};
+
+template <DepthFormat kFormat>
+int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                  uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
+                  const DepthEncoding& encoding);
+
 }  // namespace
 
 int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
-                      uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells) {
+                      uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
+                      const DepthEncoding& encoding) {
+  switch (encoding.format) {
+    case DepthFormat::kLinearZ:
+      return RasterizeWith<DepthFormat::kLinearZ>(a, b, c, faceNumber, rule, depth, cells, encoding);
+    case DepthFormat::kFixed16InverseZ:
+      return RasterizeWith<DepthFormat::kFixed16InverseZ>(a, b, c, faceNumber, rule, depth, cells,
+                                                          encoding);
+    case DepthFormat::kFloatInverseZ: break;
+  }
+  return RasterizeWith<DepthFormat::kFloatInverseZ>(a, b, c, faceNumber, rule, depth, cells, encoding);
+}
+
+namespace {
+
+template <DepthFormat kFormat>
+int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                  uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
+                  const DepthEncoding& encoding) {
   // Step 1: the cells whose samples the bounding box holds; most triangles
   // of a fine mesh hold none and stop here.
   int col0 = 0, col1 = 0, row0 = 0, row1 = 0;
@@ -65,8 +120,7 @@ int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const Raster
   const Edge e20 = MakeEdge(*v2, *v0, originX, originY);  // weight of v1
   const Edge e01 = MakeEdge(*v0, *v1, originX, originY);  // weight of v2
   // 1/z is linear in screen space: w = sum of edge weights times vertex w / area.
-  const float invArea = 1.0F / static_cast<float>(area);
-  const float k0 = v0->w * invArea, k1 = v1->w * invArea, k2 = v2->w * invArea;
+  const DepthInterpolator<kFormat> interpolate(*v0, *v1, *v2, area, encoding);
 
   // Step 4: visit samples; write the nearest (or latest) surface.
   int written = 0;
@@ -78,8 +132,7 @@ int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const Raster
     for (int col = col0; col <= col1; ++col, ++index) {
       if ((w12 | w20 | w01) >= 0) {
         // The fill-rule bias (1 unit in 2^16 per cell^2) is negligible in the weights.
-        const float w = static_cast<float>(w12) * k0 + static_cast<float>(w20) * k1 +
-                        static_cast<float>(w01) * k2;
+        const float w = interpolate(w12, w20, w01);
         float& stored = depth.At(index);
         const bool wins = rule == DepthRule::kOverwrite || w > stored ||
                           (w == stored && faceNumber < faces[index]);
@@ -96,6 +149,59 @@ int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const Raster
     row12 += e12.stepY;
     row20 += e20.stepY;
     row01 += e01.stepY;
+  }
+  return written;
+}
+
+}  // namespace
+
+int RasterizeTriangleScanline(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                              uint32_t faceNumber, DepthRule rule, DepthBuffer& depth,
+                              CellBuffer& cells) {
+  struct Point {
+    float u, v, w;
+  };
+  // Step 1: float positions in cells, sorted top to bottom.
+  Point p[3] = {{a.x / 256.0F, a.y / 256.0F, a.w}, {b.x / 256.0F, b.y / 256.0F, b.w},
+                {c.x / 256.0F, c.y / 256.0F, c.w}};
+  std::sort(std::begin(p), std::end(p), [](const Point& l, const Point& r) { return l.v < r.v; });
+  const float height = p[2].v - p[0].v;
+  if (!(height > 0.0F)) return 0;
+  // Step 2: per row, x and w on the long edge (0-2) and the short ones (0-1, 1-2).
+  const float longDu = (p[2].u - p[0].u) / height, longDw = (p[2].w - p[0].w) / height;
+  int written = 0;
+  auto& faces = cells.FaceNumbers();
+  const int firstRow = std::max(0, static_cast<int>(std::ceil(p[0].v - 0.5F)));
+  const int lastRow = std::min(cells.HeightCells() - 1, static_cast<int>(std::ceil(p[2].v - 0.5F)) - 1);
+  float longU = p[0].u + (firstRow + 0.5F - p[0].v) * longDu;
+  float longW = p[0].w + (firstRow + 0.5F - p[0].v) * longDw;
+  for (int row = firstRow; row <= lastRow; ++row, longU += longDu, longW += longDw) {
+    const float y = row + 0.5F;
+    const Point& s0 = y < p[1].v ? p[0] : p[1];
+    const Point& s1 = y < p[1].v ? p[1] : p[2];
+    const float span = s1.v - s0.v;
+    if (!(span > 0.0F)) continue;
+    const float t = (y - s0.v) / span;
+    float leftU = longU, leftW = longW;
+    float rightU = s0.u + t * (s1.u - s0.u), rightW = s0.w + t * (s1.w - s0.w);
+    if (leftU > rightU) {
+      std::swap(leftU, rightU);
+      std::swap(leftW, rightW);
+    }
+    // Step 3: the span's samples, w stepped along the row.
+    const int firstCol = std::max(0, static_cast<int>(std::ceil(leftU - 0.5F)));
+    const int lastCol = std::min(cells.WidthCells() - 1, static_cast<int>(std::ceil(rightU - 0.5F)) - 1);
+    const float dw = rightU > leftU ? (rightW - leftW) / (rightU - leftU) : 0.0F;
+    float w = leftW + (firstCol + 0.5F - leftU) * dw;
+    size_t index = cells.Index(std::max(0, firstCol), row);
+    for (int col = firstCol; col <= lastCol; ++col, ++index, w += dw) {
+      float& stored = depth.At(index);
+      if (rule == DepthRule::kOverwrite || w > stored || (w == stored && faceNumber < faces[index])) {
+        stored = w;
+        faces[index] = faceNumber;
+        ++written;
+      }
+    }
   }
   return written;
 }

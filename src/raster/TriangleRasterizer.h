@@ -27,6 +27,19 @@ inline bool MayCoverSample(const RasterVertex& a, const RasterVertex& b, const R
   return firstCol <= lastCol && firstRow <= lastRow;
 }
 
+/// How depth is interpolated and stored. The product uses kFloatInverseZ; the
+/// others are kept to measure against it (termshade bench).
+enum class DepthFormat {
+  kFloatInverseZ,    ///< 1/z linear in screen space, in float (SPEC 5)
+  kLinearZ,          ///< z itself interpolated linearly: wrong on purpose
+  kFixed16InverseZ,  ///< 1/z quantized to 16 bits over the frame's range (old game books)
+};
+
+struct DepthEncoding {
+  DepthFormat format = DepthFormat::kFloatInverseZ;
+  float fixedScale = 1.0F;  ///< kFixed16InverseZ: w x fixedScale spans 0..65535
+};
+
 enum class DepthRule {
   kNearestWins,  ///< Z-buffer: larger w wins; equal w goes to the lower face number
   kOverwrite,    ///< painter and cull: the later triangle wins
@@ -37,6 +50,15 @@ enum class DepthRule {
 /// triangles sharing an edge cover each sample on it exactly once. Returns
 /// the number of samples written.
 int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
-                      uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells);
+                      uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
+                      const DepthEncoding& encoding = {});
+
+/// The classic scanline algorithm of course notes, kept for comparison:
+/// vertices sorted by row, edge x and w stepped incrementally in float per
+/// row and column, spans filled between the edges at sample centers. Not
+/// watertight on shared edges (float steps drift).
+int RasterizeTriangleScanline(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                              uint32_t faceNumber, DepthRule rule, DepthBuffer& depth,
+                              CellBuffer& cells);
 
 }  // namespace termshade

@@ -1,0 +1,259 @@
+#include "MethodsBench.h"
+
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <numbers>
+#include <vector>
+
+#include "SpeedErrorPlot.h"
+#include "geometry/FitCamera.h"
+#include "geometry/RayCast.h"
+#include "geometry/ViewingTransform.h"
+#include "io/ModelLoader.h"
+#include "io/SceneGenerators.h"
+#include "raster/FrameError.h"
+#include "raster/Renderer.h"
+
+namespace termshade {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct MethodCase {
+  std::string name;
+  RenderOptions options;
+  bool measuresFaces = true;  ///< supersampled variants have no single sample per cell
+};
+
+std::vector<MethodCase> Methods() {
+  auto with = [](Method method, auto change) {
+    RenderOptions options;
+    options.method = method;
+    options.shade = ShadeMode::kLambert;  // stable across frames: shade error means something
+    change(options.variant);
+    return options;
+  };
+  auto same = [](RenderVariant&) {};
+  return {
+      {"zbuffer (1/z float, default)", with(Method::kZBuffer, same)},
+      {"auto", with(Method::kAuto, same)},
+      {"cull", with(Method::kCull, same)},
+      {"painter", with(Method::kPainter, same)},
+      {"zbuffer linear z", with(Method::kZBuffer, [](RenderVariant& v) { v.depthFormat = DepthFormat::kLinearZ; })},
+      {"zbuffer 1/z 16-bit fixed", with(Method::kZBuffer, [](RenderVariant& v) { v.depthFormat = DepthFormat::kFixed16InverseZ; })},
+      {"zbuffer scanline", with(Method::kZBuffer, [](RenderVariant& v) { v.scanline = true; })},
+      {"zbuffer float geometry", with(Method::kZBuffer, [](RenderVariant& v) { v.floatGeometry = true; })},
+      {"zbuffer 2x2 samples", with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 2; }), false},
+      {"zbuffer 4x4 samples", with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 4; }), false},
+  };
+}
+
+struct NamedScene {
+  std::string name;
+  Scene scene;
+  bool nearlyHeadOn = false;  ///< views within a few degrees of the +x axis, not a turntable
+};
+
+Mesh CrossingQuads() {
+  Mesh mesh;
+  mesh.verticesFile = {{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1},
+                       {-1, -1, 1},  {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}};
+  for (uint32_t base : {0U, 4U}) {
+    mesh.AddFace(std::array<uint32_t, 4>{base, base + 1, base + 2, base + 3});
+    mesh.AddFace(std::array<uint32_t, 4>{base + 3, base + 2, base + 1, base});
+  }
+  return mesh;
+}
+
+// A large plate and a smaller one `gap` in front of it, both facing +x.
+Mesh ParallelPlates(double gap) {
+  Mesh mesh;
+  mesh.verticesFile = {{0, -2, -2}, {0, 2, -2}, {0, 2, 2}, {0, -2, 2},
+                       {gap, -1, -1}, {gap, 1, -1}, {gap, 1, 1}, {gap, -1, 1}};
+  mesh.AddFace(std::array<uint32_t, 4>{0, 1, 2, 3});
+  mesh.AddFace(std::array<uint32_t, 4>{4, 5, 6, 7});
+  return mesh;
+}
+
+std::vector<NamedScene> Scenes(const std::string& dataDirectory) {
+  std::vector<NamedScene> scenes;
+  for (const char* name : {"cube", "beams", "letter_l", "surface", "sphere_cone"}) {
+    Loaded<Mesh> mesh = LoadModelFile(dataDirectory + "/" + name + ".dat");
+    if (!mesh.Ok()) {
+      std::cerr << mesh.Error().ToString() << "\n";
+      continue;
+    }
+    scenes.push_back({name, PrepareScene(std::move(mesh.Value()))});
+  }
+  scenes.push_back({"crossing quads", PrepareScene(CrossingQuads())});
+  scenes.push_back({"plates gap 1e-4", PrepareScene(ParallelPlates(1e-4)), true});
+  scenes.push_back({"sphere 20k tris", PrepareScene(GenerateSphere(100, 100))});
+  scenes.push_back({"sphere 200k tris", PrepareScene(GenerateSphere(317, 317))});
+  return scenes;
+}
+
+double Median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t mid = values.size() / 2;
+  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+// Reference shade of each cell: the mean Lambert intensity of 4 x 4 exact ray
+// casts (background 0), as a ramp level (-1 for a blank cell).
+std::vector<double> ReferenceLevels(const Scene& scene, const Camera& camera,
+                                    const RenderOptions& options, int width, int height) {
+  ReferenceRayCaster exact(scene, camera, options.cullBackFaces);
+  exact.BinFaces(width, height);
+  const Mat4 eyeFromWorld = EyeFromWorld(camera.view);
+  const Vec3 eyeWorld = EyePositionWorld(camera.view);
+  std::vector<double> levels(static_cast<size_t>(width) * height, -1.0);
+  constexpr int kSamples = 4;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) {
+      double sum = 0.0;
+      int covered = 0;
+      for (int j = 0; j < kSamples; ++j) {
+        for (int i = 0; i < kSamples; ++i) {
+          const RaySample hit = exact.Cast(col + (i + 0.5) / kSamples, row + (j + 0.5) / kSamples);
+          if (hit.faceNumber == 0) continue;
+          ++covered;
+          const size_t f = hit.faceNumber - 1;
+          const Vec3 n = scene.facePlanesWorld[f].normal;
+          const bool front = scene.facePlanesWorld[f].FacesPoint(eyeWorld);
+          const Vec3 nEye = TransformDirection(eyeFromWorld, front ? n : -n);
+          sum += LambertIntensity(Dot(nEye, options.sunEye), options.ambient);
+        }
+      }
+      if (covered > 0) {
+        levels[static_cast<size_t>(row) * width + col] =
+            options.ramp.LevelFor(sum / (kSamples * kSamples));
+      }
+    }
+  }
+  return levels;
+}
+
+struct CaseResult {
+  double medianMs = 0.0;
+  double faceError = 0.0;  ///< share of compared cells; < 0 when not measured
+  double shadeErrorLevels = 0.0;
+  int compared = 0;
+};
+
+CaseResult Measure(const NamedScene& named, const MethodCase& method,
+                   const std::vector<std::vector<double>>& referenceLevels,
+                   const std::vector<Camera>& cameras, const MethodsBenchOptions& options) {
+  Renderer renderer;
+  CellBuffer cells(options.widthCells, options.heightCells);
+  DepthBuffer depth;
+  depth.Resize(options.widthCells, options.heightCells);
+  CaseResult result;
+  // Step 1: time, frames round-robin until the budget is spent.
+  std::vector<double> times;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(options.secondsPerCase);
+  for (size_t i = 0; times.size() < cameras.size() * 3 || Clock::now() < deadline; ++i) {
+    const auto start = Clock::now();
+    renderer.Render(named.scene, cameras[i % cameras.size()], method.options, depth, cells);
+    times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    if (times.size() > 20000) break;
+  }
+  result.medianMs = Median(times);
+  // Step 2: error on every frame.
+  long wrong = 0, compared = 0;
+  double squared = 0.0;
+  long cellsTotal = 0;
+  for (size_t f = 0; f < cameras.size(); ++f) {
+    renderer.Render(named.scene, cameras[f], method.options, depth, cells);
+    if (method.measuresFaces) {
+      const FaceErrorReport report =
+          MeasureFaceError(named.scene, cameras[f], method.options.cullBackFaces, cells);
+      wrong += report.wrongCells;
+      compared += report.comparedCells;
+    }
+    for (size_t i = 0; i < cells.Levels().size(); ++i) {
+      const double level = cells.FaceNumbers()[i] == 0 ? -1.0 : cells.Levels()[i];
+      const double difference = level - referenceLevels[f][i];
+      squared += difference * difference;
+      ++cellsTotal;
+    }
+  }
+  result.faceError = method.measuresFaces && compared > 0 ? double(wrong) / compared : -1.0;
+  result.compared = static_cast<int>(compared);
+  result.shadeErrorLevels = std::sqrt(squared / std::max(1L, cellsTotal));
+  return result;
+}
+
+std::string MachineDescription() {
+  utsname name{};
+  uname(&name);
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  return model + ", " + name.sysname + " " + name.release + ", 1 thread";
+}
+
+}  // namespace
+
+int RunMethodsBench(const MethodsBenchOptions& options) {
+  const std::vector<NamedScene> scenes = Scenes(options.dataDirectory);
+  if (scenes.size() < 3) {
+    std::cerr << "termshade bench: run it from the source tree (or pass --data DIR)\n";
+    return 1;
+  }
+  const std::vector<MethodCase> methods = Methods();
+  std::ofstream csv(options.csvPath);
+  csv << "scene,method,triangles,median_ms,ns_per_cell,face_error,shade_error_levels,compared_cells\n";
+  std::printf("termshade bench methods: %dx%d cells, %d turntable frames per scene, %s\n",
+              options.widthCells, options.heightCells, options.frames, MachineDescription().c_str());
+  std::printf("%-16s %-30s %9s %10s %10s %11s\n", "scene", "method", "median ms", "ns/cell",
+              "face err %", "shade RMS");
+  std::vector<PlotPoint> points;
+  for (const NamedScene& named : scenes) {
+    // The same frames for every method: a turntable, alternating elevations.
+    std::vector<Camera> cameras;
+    std::vector<std::vector<double>> referenceLevels;
+    const double rho = DefaultView(named.scene.diagonalModelUnits).rho;
+    RenderOptions lambert;
+    lambert.shade = ShadeMode::kLambert;
+    for (int f = 0; f < options.frames; ++f) {
+      ViewParams view{rho, 0.3 + f * 2.0 * std::numbers::pi / options.frames, f % 2 ? 0.7 : 1.3};
+      if (named.nearlyHeadOn) {
+        view = {rho, 0.02 * std::sin(f), std::numbers::pi / 2 + 0.02 * std::cos(f)};
+      }
+      cameras.push_back(FitCamera(named.scene, view, options.widthCells, options.heightCells, 2.0));
+      referenceLevels.push_back(ReferenceLevels(named.scene, cameras.back(), lambert,
+                                                options.widthCells, options.heightCells));
+    }
+    for (const MethodCase& method : methods) {
+      const CaseResult result = Measure(named, method, referenceLevels, cameras, options);
+      const double nsPerCell = 1e6 * result.medianMs / (options.widthCells * options.heightCells);
+      char faceText[32] = "-";
+      if (result.faceError >= 0) std::snprintf(faceText, sizeof faceText, "%.3f", 100 * result.faceError);
+      std::printf("%-16s %-30s %9.4f %10.2f %10s %11.3f\n", named.name.c_str(), method.name.c_str(),
+                  result.medianMs, nsPerCell, faceText, result.shadeErrorLevels);
+      csv << '"' << named.name << "\",\"" << method.name << "\"," << named.scene.triangles.size()
+          << ',' << result.medianMs << ',' << nsPerCell << ','
+          << (result.faceError >= 0 ? std::to_string(result.faceError) : "") << ','
+          << result.shadeErrorLevels << ',' << result.compared << "\n";
+      points.push_back({named.name, method.name, result.medianMs, result.faceError,
+                        result.shadeErrorLevels});
+    }
+  }
+  WriteSpeedErrorPlot(points, MachineDescription(), options.svgPath);
+  std::printf("wrote %s and %s\n", options.csvPath.c_str(), options.svgPath.c_str());
+  return csv ? 0 : 1;
+}
+
+}  // namespace termshade

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+
+namespace termshade {
+
+/// `termshade bench methods`: speed against error for every method on the
+/// same frames.
+struct MethodsBenchOptions {
+  int widthCells = 160;
+  int heightCells = 48;
+  int frames = 8;                 ///< turntable views per scene
+  double secondsPerCase = 0.3;    ///< timing budget per method and scene
+  std::string csvPath = "bench-methods.csv";
+  std::string svgPath = "bench-methods.svg";
+  std::string dataDirectory = "data";
+};
+
+int RunMethodsBench(const MethodsBenchOptions& options);
+
+}  // namespace termshade
