@@ -46,12 +46,18 @@ std::vector<MethodCase> Methods() {
       {"auto", with(Method::kAuto, same)},
       {"cull", with(Method::kCull, same)},
       {"painter", with(Method::kPainter, same)},
-      {"zbuffer linear z", with(Method::kZBuffer, [](RenderVariant& v) { v.depthFormat = DepthFormat::kLinearZ; })},
-      {"zbuffer 1/z 16-bit fixed", with(Method::kZBuffer, [](RenderVariant& v) { v.depthFormat = DepthFormat::kFixed16InverseZ; })},
+      {"zbuffer linear z",
+       with(Method::kZBuffer, [](RenderVariant& v) { v.depthFormat = DepthFormat::kLinearZ; })},
+      {"zbuffer 1/z 16-bit fixed",
+       with(Method::kZBuffer,
+            [](RenderVariant& v) { v.depthFormat = DepthFormat::kFixed16InverseZ; })},
       {"zbuffer scanline", with(Method::kZBuffer, [](RenderVariant& v) { v.scanline = true; })},
-      {"zbuffer float geometry", with(Method::kZBuffer, [](RenderVariant& v) { v.floatGeometry = true; })},
-      {"zbuffer 2x2 samples", with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 2; }), false},
-      {"zbuffer 4x4 samples", with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 4; }), false},
+      {"zbuffer float geometry",
+       with(Method::kZBuffer, [](RenderVariant& v) { v.floatGeometry = true; })},
+      {"zbuffer 2x2 samples",
+       with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 2; }), false},
+      {"zbuffer 4x4 samples",
+       with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 4; }), false},
   };
 }
 
@@ -63,7 +69,7 @@ struct NamedScene {
 
 Mesh CrossingQuads() {
   Mesh mesh;
-  mesh.verticesFile = {{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1},
+  mesh.verticesFile = {{-1, -1, -1}, {1, -1, 1}, {1, 1, 1},  {-1, 1, -1},
                        {-1, -1, 1},  {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}};
   for (uint32_t base : {0U, 4U}) {
     mesh.AddFace(std::array<uint32_t, 4>{base, base + 1, base + 2, base + 3});
@@ -75,7 +81,7 @@ Mesh CrossingQuads() {
 // A large plate and a smaller one `gap` in front of it, both facing +x.
 Mesh ParallelPlates(double gap) {
   Mesh mesh;
-  mesh.verticesFile = {{0, -2, -2}, {0, 2, -2}, {0, 2, 2}, {0, -2, 2},
+  mesh.verticesFile = {{0, -2, -2},   {0, 2, -2},   {0, 2, 2},   {0, -2, 2},
                        {gap, -1, -1}, {gap, 1, -1}, {gap, 1, 1}, {gap, -1, 1}};
   mesh.AddFace(std::array<uint32_t, 4>{0, 1, 2, 3});
   mesh.AddFace(std::array<uint32_t, 4>{4, 5, 6, 7});
@@ -214,9 +220,11 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
   }
   const std::vector<MethodCase> methods = Methods();
   std::ofstream csv(options.csvPath);
-  csv << "scene,method,triangles,median_ms,ns_per_cell,face_error,shade_error_levels,compared_cells\n";
+  csv << "scene,method,triangles,median_ms,ns_per_cell,face_error,shade_error_levels,compared_"
+         "cells\n";
   std::printf("termshade bench methods: %dx%d cells, %d turntable frames per scene, %s\n",
-              options.widthCells, options.heightCells, options.frames, MachineDescription().c_str());
+              options.widthCells, options.heightCells, options.frames,
+              MachineDescription().c_str());
   std::printf("%-16s %-30s %9s %10s %10s %11s\n", "scene", "method", "median ms", "ns/cell",
               "face err %", "shade RMS");
   std::vector<PlotPoint> points;
@@ -240,15 +248,16 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
       const CaseResult result = Measure(named, method, referenceLevels, cameras, options);
       const double nsPerCell = 1e6 * result.medianMs / (options.widthCells * options.heightCells);
       char faceText[32] = "-";
-      if (result.faceError >= 0) std::snprintf(faceText, sizeof faceText, "%.3f", 100 * result.faceError);
+      if (result.faceError >= 0)
+        std::snprintf(faceText, sizeof faceText, "%.3f", 100 * result.faceError);
       std::printf("%-16s %-30s %9.4f %10.2f %10s %11.3f\n", named.name.c_str(), method.name.c_str(),
                   result.medianMs, nsPerCell, faceText, result.shadeErrorLevels);
       csv << '"' << named.name << "\",\"" << method.name << "\"," << named.scene.triangles.size()
           << ',' << result.medianMs << ',' << nsPerCell << ','
           << (result.faceError >= 0 ? std::to_string(result.faceError) : "") << ','
           << result.shadeErrorLevels << ',' << result.compared << "\n";
-      points.push_back({named.name, method.name, result.medianMs, result.faceError,
-                        result.shadeErrorLevels});
+      points.push_back(
+          {named.name, method.name, result.medianMs, result.faceError, result.shadeErrorLevels});
     }
   }
   WriteSpeedErrorPlot(points, MachineDescription(), options.svgPath);

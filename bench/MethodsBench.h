@@ -9,8 +9,8 @@ namespace termshade {
 struct MethodsBenchOptions {
   int widthCells = 160;
   int heightCells = 48;
-  int frames = 8;                 ///< turntable views per scene
-  double secondsPerCase = 0.3;    ///< timing budget per method and scene
+  int frames = 8;               ///< turntable views per scene
+  double secondsPerCase = 0.3;  ///< timing budget per method and scene
   std::string csvPath = "bench-methods.csv";
   std::string svgPath = "bench-methods.svg";
   std::string dataDirectory = "data";

@@ -10,8 +10,9 @@
 namespace termshade {
 namespace {
 
-constexpr std::array<const char*, 10> kColours{"#1f77b4", "#2ca02c", "#17becf", "#d62728", "#ff7f0e",
-                                               "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"};
+constexpr std::array<const char*, 10> kColours{"#1f77b4", "#2ca02c", "#17becf", "#d62728",
+                                               "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
+                                               "#7f7f7f", "#bcbd22"};
 
 struct Panel {
   double left, top, width, height;
@@ -67,10 +68,19 @@ void WriteSpeedErrorPlot(const std::vector<PlotPoint>& points, const std::string
   };
   const double xLow = std::floor(std::log10(std::max(lowMs, 1e-4))),
                xHigh = std::ceil(std::log10(std::max(highMs, 1e-3)));
-  const Panel facePanel{70, 50, 420, 320, xLow, xHigh, roundUp(std::max(highFace, 0.1)), "face error, % of cells"};
-  const Panel shadePanel{570, 50, 420, 320, xLow, xHigh, roundUp(std::max(highShade, 0.1)), "shade error, RMS ramp levels"};
+  const Panel facePanel{
+      70, 50, 420, 320, xLow, xHigh, roundUp(std::max(highFace, 0.1)), "face error, % of cells"};
+  const Panel shadePanel{570,
+                         50,
+                         420,
+                         320,
+                         xLow,
+                         xHigh,
+                         roundUp(std::max(highShade, 0.1)),
+                         "shade error, RMS ramp levels"};
   std::ostringstream svg;
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='1300' height='440' font-family='sans-serif'>\n"
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='1300' height='440' "
+         "font-family='sans-serif'>\n"
       << "<rect width='1300' height='440' fill='white'/>\n"
       << "<text x='20' y='24' font-size='15'>termshade: speed against error, each point one method "
          "on one scene (160x48 cells). "
@@ -84,9 +94,9 @@ void WriteSpeedErrorPlot(const std::vector<PlotPoint>& points, const std::string
           << "' r='4' fill='" << colour << "' fill-opacity='0.8'><title>" << p.method << " / "
           << p.scene << "</title></circle>\n";
     }
-    svg << "<circle cx='" << shadePanel.X(p.medianMs) << "' cy='" << shadePanel.Y(p.shadeErrorLevels)
-        << "' r='4' fill='" << colour << "' fill-opacity='0.8'><title>" << p.method << " / "
-        << p.scene << "</title></circle>\n";
+    svg << "<circle cx='" << shadePanel.X(p.medianMs) << "' cy='"
+        << shadePanel.Y(p.shadeErrorLevels) << "' r='4' fill='" << colour
+        << "' fill-opacity='0.8'><title>" << p.method << " / " << p.scene << "</title></circle>\n";
   }
   int row = 0;
   for (const auto& [method, colour] : methodColour) {

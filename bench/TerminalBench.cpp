@@ -96,7 +96,8 @@ class PtySession {
   long Drain() {
     long total = 0;
     char buffer[65536];
-    for (ssize_t n = read(master_, buffer, sizeof buffer); n > 0; n = read(master_, buffer, sizeof buffer)) {
+    for (ssize_t n = read(master_, buffer, sizeof buffer); n > 0;
+         n = read(master_, buffer, sizeof buffer)) {
       total += n;
     }
     return total;
@@ -203,7 +204,8 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
 
   std::vector<std::string> argv;
   if (traced) {
-    argv = {"strace", "-f", "-qq", "-ttt", "-e", "trace=write,writev", "-e", "signal=none", "-o", logPath};
+    argv = {"strace", "-f",          "-qq", "-ttt", "-e", "trace=write,writev",
+            "-e",     "signal=none", "-o",  logPath};
   }
   argv.push_back(options.viewerPath);
   if (!options.modelPath.empty()) argv.push_back(options.modelPath);
@@ -246,9 +248,10 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
 
   // Step 5: the report.
   const int turntableFrames = std::max(1, CountBursts(arrivals, 0.015));
-  std::printf("termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, colour on\n",
-              options.widthCells, options.heightCells,
-              options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str());
+  std::printf(
+      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, colour on\n",
+      options.widthCells, options.heightCells,
+      options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str());
   std::printf("%-38s %12s\n", "measure", "value");
   std::printf("%-38s %12ld\n", "first frame, bytes", firstFrameBytes);
   std::printf("%-38s %12.0f\n", "per arrow key (median), bytes", Median(arrowBytes));

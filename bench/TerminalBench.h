@@ -7,14 +7,14 @@ namespace termshade {
 /// `termshade bench terminal`: runs the real viewer in a pseudo-terminal and
 /// measures what it sends to the terminal.
 struct TerminalBenchOptions {
-  std::string viewerPath;        ///< the termshade binary to run
-  std::string modelPath;         ///< empty: the demo scene
+  std::string viewerPath;  ///< the termshade binary to run
+  std::string modelPath;   ///< empty: the demo scene
   int widthCells = 160;
   int heightCells = 48;
   int arrowPresses = 20;
   double turntableSeconds = 4.0;
   double idleSeconds = 10.0;
-  bool traceWrites = true;       ///< count write() calls with strace, if it is installed
+  bool traceWrites = true;  ///< count write() calls with strace, if it is installed
 };
 
 /// Runs the measurement and prints the report; returns an exit code.

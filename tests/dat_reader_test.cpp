@@ -29,9 +29,9 @@ TEST(DatReader, SparseVertexNumbersMapToTheirVertices) {
   const Mesh mesh = LoadGood("sparse_vertex_numbers.dat");
   ASSERT_EQ(mesh.FaceCount(), 1U);
   const auto face = mesh.Face(0);
-  EXPECT_EQ(mesh.verticesFile[face[0]], (Vec3{0, 0, 0}));   // 10
-  EXPECT_EQ(mesh.verticesFile[face[2]], (Vec3{1, 1, 0}));   // 35
-  EXPECT_EQ(mesh.verticesFile[face[3]], (Vec3{0, 1, 0}));   // 7
+  EXPECT_EQ(mesh.verticesFile[face[0]], (Vec3{0, 0, 0}));  // 10
+  EXPECT_EQ(mesh.verticesFile[face[2]], (Vec3{1, 1, 0}));  // 35
+  EXPECT_EQ(mesh.verticesFile[face[3]], (Vec3{0, 1, 0}));  // 7
 }
 
 TEST(DatReader, MinusMarksHiddenEdgesAndHashEndsAFace) {
@@ -135,7 +135,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ModelLoader, MissingFileSaysSo) {
   Loaded<Mesh> mesh = LoadModelFile("/nonexistent/model.dat");
   ASSERT_FALSE(mesh.Ok());
-  EXPECT_EQ(mesh.Error().ToString(), "/nonexistent/model.dat: cannot open: No such file or directory");
+  EXPECT_EQ(mesh.Error().ToString(),
+            "/nonexistent/model.dat: cannot open: No such file or directory");
 }
 
 TEST(ModelLoader, ImportsObjThroughAssimp) {

@@ -37,7 +37,8 @@ TEST(Degenerate, ZeroLengthEdgeFoundByTheFuzzer) {
 }
 
 TEST(Degenerate, CollinearAndDuplicateCornersDrawNothing) {
-  const Scene scene = FromText("1 0 0 0\n2 1 1 1\n3 2 2 2\n4 0 0 0\nFaces:\n1 2 3.\n1 1 1.\n1 4 2.\n");
+  const Scene scene =
+      FromText("1 0 0 0\n2 1 1 1\n3 2 2 2\n4 0 0 0\nFaces:\n1 2 3.\n1 1 1.\n1 4 2.\n");
   RenderEveryWay(scene);
   RenderOptions options;
   const test::Frame frame = test::RenderFrame(scene, 0.4, 1.1, 40, 12, options);
@@ -53,7 +54,8 @@ TEST(Degenerate, EmptyAndSinglePointModels) {
 TEST(Degenerate, HugeAndTinyCoordinates) {
   RenderEveryWay(FromText("1 -1e300 0 0\n2 1e300 0 0\n3 0 1e300 0\nFaces:\n1 2 3.\n3 2 1.\n"));
   RenderEveryWay(FromText("1 0 0 0\n2 1e-300 0 0\n3 0 1e-300 0\nFaces:\n1 2 3.\n3 2 1.\n"));
-  RenderEveryWay(FromText("1 1e5 1e5 1e5\n2 100001 1e5 1e5\n3 1e5 100001 1e5\nFaces:\n1 2 3.\n3 2 1.\n"));
+  RenderEveryWay(
+      FromText("1 1e5 1e5 1e5\n2 100001 1e5 1e5\n3 1e5 100001 1e5\nFaces:\n1 2 3.\n3 2 1.\n"));
 }
 
 TEST(Degenerate, SelfIntersectingAndNonPlanarFaces) {

@@ -47,7 +47,8 @@ TEST(DepthInterpolation, NearerSurfaceWinsWhateverTheOrder) {
     depth.Resize(20, 10);
     if (nearFirst) RasterizeTriangle(nearA, nearB, nearC, 1, DepthRule::kNearestWins, depth, cells);
     RasterizeTriangle(farA, farB, farC, 2, DepthRule::kNearestWins, depth, cells);
-    if (!nearFirst) RasterizeTriangle(nearA, nearB, nearC, 1, DepthRule::kNearestWins, depth, cells);
+    if (!nearFirst)
+      RasterizeTriangle(nearA, nearB, nearC, 1, DepthRule::kNearestWins, depth, cells);
     EXPECT_EQ(cells.FaceNumber(10, 5), 1U);
     EXPECT_NEAR(depth.DepthAt(cells.Index(10, 5)), 5.0, 1e-4);
   }

@@ -38,7 +38,8 @@ TEST_P(GoldenFrames, MatchEveryMethodAndView) {
     for (const GoldenView& view : kViews) {
       RenderOptions options;
       options.method = method;
-      const std::string actual = test::RenderFrame(scene, view.theta, view.phi, 80, 24, options).Text();
+      const std::string actual =
+          test::RenderFrame(scene, view.theta, view.phi, 80, 24, options).Text();
       const std::string path = GoldenPath(GetParam(), method, view);
       if (update) {
         std::ofstream(path, std::ios::binary) << actual;
@@ -52,7 +53,9 @@ TEST_P(GoldenFrames, MatchEveryMethodAndView) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GoldenFrames, testing::ValuesIn(GeneratedSceneNames()),
-                         [](const testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
 
 TEST(GoldenFrames, RenderingIsRepeatable) {
   const Scene scene = test::LoadScene("data/sphere_cone.dat");

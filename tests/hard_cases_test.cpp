@@ -25,7 +25,8 @@ struct Frame {
 
 Frame RenderWith(const Scene& scene, const Camera& camera, const RenderOptions& options) {
   Frame frame;
-  frame.cells.Resize(static_cast<int>(camera.projection.cx * 2), static_cast<int>(camera.projection.cy * 2));
+  frame.cells.Resize(static_cast<int>(camera.projection.cx * 2),
+                     static_cast<int>(camera.projection.cy * 2));
   frame.depth.Resize(frame.cells.WidthCells(), frame.cells.HeightCells());
   Renderer renderer;
   frame.stats = renderer.Render(scene, camera, options, frame.depth, frame.cells);
@@ -75,9 +76,10 @@ TEST(HardCases, CyclicOverlapAndInterpenetration) {
   for (const auto& v : kViews) {
     const ViewParams view{6.0, v[0], v[1]};
     ExpectNoFaceError(crossing, CameraLooking(view, 1.8, 6.0), "crossing quads", false);
-    ExpectNoFaceError(beams, FitCamera(beams, {DefaultView(beams.diagonalModelUnits).rho, v[0], v[1]},
-                                       80, 24, 2.0),
-                      "beams");
+    ExpectNoFaceError(
+        beams,
+        FitCamera(beams, {DefaultView(beams.diagonalModelUnits).rho, v[0], v[1]}, 80, 24, 2.0),
+        "beams");
   }
   // The painter's error on the crossing quads, for the record.
   RenderOptions painter;
@@ -93,7 +95,8 @@ TEST(HardCases, CyclicOverlapAndInterpenetration) {
 
 TEST(HardCases, PolygonStraddlingTheEyePlane) {
   // A floor far larger than the view, reaching behind the eye, and a cube on it.
-  Mesh mesh = QuadMesh({{{{-100, -100, -0.5}, {100, -100, -0.5}, {100, 100, -0.5}, {-100, 100, -0.5}}}});
+  Mesh mesh =
+      QuadMesh({{{{-100, -100, -0.5}, {100, -100, -0.5}, {100, 100, -0.5}, {-100, 100, -0.5}}}});
   Mesh cube = *GenerateScene("cube");
   for (const Vec3& p : cube.verticesFile) mesh.verticesFile.push_back(p - Vec3{0.5, 0.5, 0.5});
   for (size_t f = 0; f < cube.FaceCount(); ++f) {
@@ -104,7 +107,8 @@ TEST(HardCases, PolygonStraddlingTheEyePlane) {
   const Scene scene = PrepareScene(mesh);
   for (const auto& v : kViews) {
     if (v[1] > std::numbers::pi / 2) continue;  // from below, the floor hides everything
-    ExpectNoFaceError(scene, CameraLooking({3.0, v[0], v[1]}, 1.0, 3.0), "floor through the eye plane");
+    ExpectNoFaceError(scene, CameraLooking({3.0, v[0], v[1]}, 1.0, 3.0),
+                      "floor through the eye plane");
   }
 }
 
@@ -112,9 +116,9 @@ TEST(HardCases, VertexJustInFrontOfTheEyeAndTriangleBehindIt) {
   // Eye on the x axis at rho = 4: eye-space z = x - 4.
   const double rho = 4.0;
   Mesh mesh;
-  mesh.verticesFile = {{rho - 1e-7, 0.3, 0.2}, {0, -1, -1}, {0, 1, -1},        // 1e-7 in front
-                       {rho + 1, -1, -1},    {rho + 1, 1, -1}, {rho + 2, 0, 1},  // behind the eye
-                       {0, -1, 0.5},         {0, 1, 0.5},  {0, 0, 1.5}};
+  mesh.verticesFile = {{rho - 1e-7, 0.3, 0.2}, {0, -1, -1},      {0, 1, -1},       // 1e-7 in front
+                       {rho + 1, -1, -1},      {rho + 1, 1, -1}, {rho + 2, 0, 1},  // behind the eye
+                       {0, -1, 0.5},           {0, 1, 0.5},      {0, 0, 1.5}};
   mesh.AddFace(std::array<uint32_t, 3>{0, 1, 2});
   mesh.AddFace(std::array<uint32_t, 3>{0, 2, 1});
   mesh.AddFace(std::array<uint32_t, 3>{3, 4, 5});
@@ -136,7 +140,8 @@ TEST(HardCases, VertexJustInFrontOfTheEyeAndTriangleBehindIt) {
 
 TEST(HardCases, CollinearDuplicateAndNaNTrianglesDrawNothing) {
   Mesh mesh;
-  mesh.verticesFile = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {0, 0, 0}, {NAN, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.verticesFile = {{0, 0, 0},   {1, 1, 1}, {2, 2, 2}, {0, 0, 0},
+                       {NAN, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   mesh.AddFace(std::array<uint32_t, 3>{0, 1, 2});  // collinear
   mesh.AddFace(std::array<uint32_t, 3>{0, 3, 1});  // duplicate vertex position
   mesh.AddFace(std::array<uint32_t, 3>{4, 5, 6});  // NaN
@@ -190,7 +195,8 @@ TEST(HardCases, ParallelPlatesAtDecreasingGaps) {
     const FaceErrorReport report = MeasureFaceError(centered, camera, true, frame.cells);
     EXPECT_EQ(report.wrongCells, 0) << "gap " << gap;
     // Without the depth band: how often the far plate wins, for the record.
-    const FaceErrorReport strict = MeasureFaceError(centered, camera, true, frame.cells, {.excludeCloseDepths = false});
+    const FaceErrorReport strict =
+        MeasureFaceError(centered, camera, true, frame.cells, {.excludeCloseDepths = false});
     std::cout << "  " << gap << ": " << strict.wrongCells << " of " << strict.comparedCells << "\n";
     // Snapping each plate's corners to 1/256 cell moves its w by about
     // |grad w| / 512, here ~2e-6 against w ~0.2: the resolution is a depth
@@ -212,14 +218,17 @@ TEST(HardCases, ScaledAndMovedScenesGiveTheSameFaceMap) {
   for (const auto& v : kViews) {
     const test::Frame reference = test::RenderFrame(unit, v[0], v[1], 80, 24, RenderOptions{});
     const ReferenceRayCaster exact(unit, reference.camera, true);
-    for (const auto& [scale, offset] :
-         {std::pair{1e-6, Vec3{}}, {1e6, Vec3{}}, {1.0, Vec3{1e5, -1e5, 1e5}}, {1e-6, Vec3{1e5, 0, 0}}}) {
+    for (const auto& [scale, offset] : {std::pair{1e-6, Vec3{}},
+                                        {1e6, Vec3{}},
+                                        {1.0, Vec3{1e5, -1e5, 1e5}},
+                                        {1e-6, Vec3{1e5, 0, 0}}}) {
       const Scene scene = transformed(scale, offset);
       const test::Frame frame = test::RenderFrame(scene, v[0], v[1], 80, 24, RenderOptions{});
       int differing = 0;
       for (int row = 0; row < 24; ++row) {
         for (int col = 0; col < 80; ++col) {
-          const uint32_t a = reference.cells.FaceNumber(col, row), b = frame.cells.FaceNumber(col, row);
+          const uint32_t a = reference.cells.FaceNumber(col, row),
+                         b = frame.cells.FaceNumber(col, row);
           if (a == b) continue;
           // Only samples on an edge (within the band) may go either way.
           if (exact.DistanceToFaceEdgeCells(a, col + 0.5, row + 0.5) <= kEdgeBandCells ||
@@ -267,7 +276,7 @@ TEST(HardCases, SphereIsRoundAtEveryCellAspect) {
 
 TEST(HardCases, ShadeRampNeverGoesDarker) {
   for (const std::string& glyphs : {std::string(".:-=+*#%@"), std::string("@"), std::string("ab"),
-                                   std::string(".,-~:;=!*#$@")}) {
+                                    std::string(".,-~:;=!*#$@")}) {
     const ShadeRamp ramp(glyphs);
     int previous = 0;
     for (int i = 0; i <= 100000; ++i) {

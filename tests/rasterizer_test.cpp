@@ -68,8 +68,9 @@ std::vector<Triangle> TilingMesh(const GridOptions& options) {
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       const RasterVertex a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      std::array<Triangle, 2> pair = options.flipDiagonals ? std::array<Triangle, 2>{{{a, b, d}, {b, c, d}}}
-                                                           : std::array<Triangle, 2>{{{a, b, c}, {a, c, d}}};
+      std::array<Triangle, 2> pair = options.flipDiagonals
+                                         ? std::array<Triangle, 2>{{{a, b, d}, {b, c, d}}}
+                                         : std::array<Triangle, 2>{{{a, b, c}, {a, c, d}}};
       for (Triangle t : pair) {
         std::rotate(t.begin(), t.begin() + options.rotateVertexOrder, t.end());
         triangles.push_back(t);
@@ -104,27 +105,30 @@ TEST(Rasterizer, TwoTrianglesOfARectangleCoverItsSamplesExactly) {
 TEST(Rasterizer, SamplesOnEdgesFollowTheTopLeftRule) {
   // A square whose corners are cell centers: samples on its top and left
   // edges are in, those on its bottom and right edges are out.
-  const RasterVertex a{SnapToFixed(2.5), SnapToFixed(3.5), 1}, b{SnapToFixed(6.5), SnapToFixed(3.5), 1},
-      c{SnapToFixed(6.5), SnapToFixed(7.5), 1}, d{SnapToFixed(2.5), SnapToFixed(7.5), 1};
+  const RasterVertex a{SnapToFixed(2.5), SnapToFixed(3.5), 1},
+      b{SnapToFixed(6.5), SnapToFixed(3.5), 1}, c{SnapToFixed(6.5), SnapToFixed(7.5), 1},
+      d{SnapToFixed(2.5), SnapToFixed(7.5), 1};
   const std::vector<int> counts = CoverageCounts({{a, b, c}, {a, c, d}});
   for (int row = 0; row < kHeight; ++row) {
     for (int col = 0; col < kWidth; ++col) {
       const bool inside = col >= 2 && col < 6 && row >= 3 && row < 7;
-      EXPECT_EQ(counts[static_cast<size_t>(row * kWidth + col)], inside ? 1 : 0) << col << "," << row;
+      EXPECT_EQ(counts[static_cast<size_t>(row * kWidth + col)], inside ? 1 : 0)
+          << col << "," << row;
     }
   }
 }
 
 TEST(Rasterizer, EmptyAndDegenerateTrianglesDrawNothing) {
-  const RasterVertex a{SnapToFixed(1.5), SnapToFixed(1.5), 1}, b{SnapToFixed(9.5), SnapToFixed(5.5), 1},
+  const RasterVertex a{SnapToFixed(1.5), SnapToFixed(1.5), 1},
+      b{SnapToFixed(9.5), SnapToFixed(5.5), 1},
       c{SnapToFixed(17.5), SnapToFixed(9.5), 1};  // collinear
   const std::vector<int> counts = CoverageCounts({{a, b, c}, {a, a, a}, {a, b, b}});
   for (int count : counts) EXPECT_EQ(count, 0);
 }
 
 TEST(Rasterizer, WindingDoesNotMatter) {
-  const RasterVertex a{SnapToFixed(1.2), SnapToFixed(1.7), 1}, b{SnapToFixed(20.1), SnapToFixed(4.3), 1},
-      c{SnapToFixed(7.9), SnapToFixed(19.6), 1};
+  const RasterVertex a{SnapToFixed(1.2), SnapToFixed(1.7), 1},
+      b{SnapToFixed(20.1), SnapToFixed(4.3), 1}, c{SnapToFixed(7.9), SnapToFixed(19.6), 1};
   EXPECT_EQ(CoverageCounts({{a, b, c}}), CoverageCounts({{a, c, b}}));
 }
 
@@ -141,18 +145,41 @@ TEST_P(WatertightTiling, EveryCellIsCoveredExactlyOnce) {
 
 INSTANTIATE_TEST_SUITE_P(
     Meshes, WatertightTiling,
-    testing::Values(TilingCase{"VerticesOnCellCenters", {}},
-                    TilingCase{"UnitStepOnCenters", {.stepCells = 1.0}},
-                    TilingCase{"Jittered", {.stepCells = 2.7, .jitterCells = 0.9, .seed = 7}},
-                    TilingCase{"Rotated", {.stepCells = 2.5, .rotationRadians = 0.3}},
-                    TilingCase{"RotatedJittered",
-                               {.stepCells = 1.7, .jitterCells = 0.6, .rotationRadians = 1.1, .seed = 3}},
-                    TilingCase{"FlippedDiagonals", {.stepCells = 2.0, .flipDiagonals = true}},
-                    TilingCase{"VertexOrderRotated", {.jitterCells = 0.7, .rotateVertexOrder = 1}},
-                    TilingCase{"VertexOrderRotatedTwice",
-                               {.stepCells = 1.3, .jitterCells = 0.4, .rotateVertexOrder = 2, .seed = 11}},
-                    TilingCase{"Slivers", {.stepCells = 0.37, .jitterCells = 0.15, .seed = 5}}),
+    testing::Values(
+        TilingCase{"VerticesOnCellCenters", {}},
+        TilingCase{"UnitStepOnCenters", {.stepCells = 1.0}},
+        TilingCase{"Jittered", {.stepCells = 2.7, .jitterCells = 0.9, .seed = 7}},
+        TilingCase{"Rotated", {.stepCells = 2.5, .rotationRadians = 0.3}},
+        TilingCase{"RotatedJittered",
+                   {.stepCells = 1.7, .jitterCells = 0.6, .rotationRadians = 1.1, .seed = 3}},
+        TilingCase{"FlippedDiagonals", {.stepCells = 2.0, .flipDiagonals = true}},
+        TilingCase{"VertexOrderRotated", {.jitterCells = 0.7, .rotateVertexOrder = 1}},
+        TilingCase{"VertexOrderRotatedTwice",
+                   {.stepCells = 1.3, .jitterCells = 0.4, .rotateVertexOrder = 2, .seed = 11}},
+        TilingCase{"Slivers", {.stepCells = 0.37, .jitterCells = 0.15, .seed = 5}}),
     [](const testing::TestParamInfo<TilingCase>& info) { return std::string(info.param.name); });
+
+TEST(Rasterizer, PerspectiveDepthDoesNotChangeCoverage) {
+  // The same projected quads, each vertex with its own w = 1/z for z in [0.1, 4].
+  const std::vector<Triangle> flat = TilingMesh({.stepCells = 2.1, .jitterCells = 0.7, .seed = 4});
+  std::vector<Triangle> deep = flat;
+  std::mt19937 random(17);
+  std::uniform_real_distribution<float> depth(0.1F, 4.0F);
+  for (Triangle& t : deep) {
+    for (RasterVertex& v : t) v.w = 1.0F / depth(random);
+  }
+  CellBuffer a(kWidth, kHeight), b(kWidth, kHeight);
+  DepthBuffer depthA, depthB;
+  depthA.Resize(kWidth, kHeight);
+  depthB.Resize(kWidth, kHeight);
+  for (size_t i = 0; i < flat.size(); ++i) {
+    const auto face = static_cast<uint32_t>(i + 1);
+    RasterizeTriangle(flat[i][0], flat[i][1], flat[i][2], face, DepthRule::kOverwrite, depthA, a);
+    RasterizeTriangle(deep[i][0], deep[i][1], deep[i][2], face, DepthRule::kOverwrite, depthB, b);
+  }
+  EXPECT_EQ(a.FaceNumbers(), b.FaceNumbers());
+  ExpectEveryCellOnce(CoverageCounts(deep));
+}
 
 TEST(Rasterizer, CoverageMovesWithWholeCellTranslation) {
   GridOptions options{.stepCells = 2.3, .jitterCells = 0.8, .seed = 9};
@@ -181,8 +208,8 @@ TEST(Rasterizer, CoverageMovesWithWholeCellTranslation) {
 TEST(Rasterizer, HugeCoordinatesNeitherOverflowNorLeak) {
   // A sliver from far outside the view crosses it; coordinates at +-1e6 cells.
   const RasterVertex far1{SnapToFixed(-1e6), SnapToFixed(-1e6), 1},
-      far2{SnapToFixed(1e6), SnapToFixed(1e6 + 0.9), 1}, far3{SnapToFixed(1e6), SnapToFixed(-1e6), 1},
-      far4{SnapToFixed(-1e6), SnapToFixed(1e6), 1};
+      far2{SnapToFixed(1e6), SnapToFixed(1e6 + 0.9), 1},
+      far3{SnapToFixed(1e6), SnapToFixed(-1e6), 1}, far4{SnapToFixed(-1e6), SnapToFixed(1e6), 1};
   // Two triangles sharing the long diagonal: together they tile the view.
   ExpectEveryCellOnce(CoverageCounts({{far1, far2, far3}, {far1, far4, far2}}));
 }

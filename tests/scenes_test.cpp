@@ -3,6 +3,9 @@
 
 #include <map>
 
+#include "io/SceneGenerators.h"
+#include "raster/FrameError.h"
+#include "raster/Renderer.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -58,6 +61,31 @@ TEST(Scenes, FunctionSurfaceIsTwoSided) {
     EXPECT_NEAR(Dot(n, m), -1.0, 1e-12);
   }
   EXPECT_NEAR(SignedVolume(surface), 0.0, 1e-9);
+}
+
+TEST(Scenes, OnlyConvexClosedSolidsLetAutoCullAlone) {
+  for (const char* name : {"cube", "wedge"}) {
+    EXPECT_TRUE(test::LoadScene(std::string("data/") + name + ".dat").convexClosedSolid) << name;
+  }
+  // Non-convex solids, several solids, sheets: auto keeps the Z-buffer.
+  for (const char* name : {"letter_l", "steps", "beams", "sphere_cone", "surface"}) {
+    EXPECT_FALSE(test::LoadScene(std::string("data/") + name + ".dat").convexClosedSolid) << name;
+  }
+  EXPECT_TRUE(PrepareScene(GenerateSphere(20, 30)).convexClosedSolid);
+  EXPECT_EQ(ResolvedMethod(test::LoadScene("data/cube.dat"), Method::kAuto), Method::kCull);
+  EXPECT_EQ(ResolvedMethod(test::LoadScene("data/beams.dat"), Method::kAuto), Method::kZBuffer);
+}
+
+TEST(Scenes, AutoIsExactWhereItCullsAlone) {
+  const Scene sphere = PrepareScene(GenerateSphere(40, 60));
+  RenderOptions options;
+  options.method = Method::kAuto;
+  for (double theta : {0.3, 1.9, 4.0}) {
+    const test::Frame frame = test::RenderFrame(sphere, theta, 0.8, 100, 40, options);
+    const FaceErrorReport report = MeasureFaceError(sphere, frame.camera, true, frame.cells);
+    EXPECT_EQ(report.wrongCells, 0);
+    EXPECT_GT(report.comparedCells, 500);
+  }
 }
 
 TEST(Scenes, NonConvexFacesTriangulateToNMinusTwo) {

@@ -56,7 +56,9 @@ void ExpectValidTriangulation(const std::vector<Vec3>& polygon) {
   }
 }
 
-TEST(Triangulate, ConvexQuad) { ExpectValidTriangulation({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}); }
+TEST(Triangulate, ConvexQuad) {
+  ExpectValidTriangulation({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+}
 
 TEST(Triangulate, LShapedFace) {
   ExpectValidTriangulation({{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 5, 0}, {0, 5, 0}});
@@ -72,16 +74,30 @@ TEST(Triangulate, CollinearLeadingVertices) {
 
 TEST(Triangulate, StaircaseProfileInAnotherPlane) {
   // The steps' side: non-convex, in the x-z plane, seen from -y.
-  std::vector<Vec3> profile{{0, 0, 0}, {0, 0, 3}, {1, 0, 3}, {1, 0, 2}, {2, 0, 2}, {2, 0, 1}, {3, 0, 1}, {3, 0, 0}};
+  std::vector<Vec3> profile{{0, 0, 0}, {0, 0, 3}, {1, 0, 3}, {1, 0, 2},
+                            {2, 0, 2}, {2, 0, 1}, {3, 0, 1}, {3, 0, 0}};
   ExpectValidTriangulation(profile);
   std::reverse(profile.begin(), profile.end());
   ExpectValidTriangulation(profile);
 }
 
 TEST(Triangulate, CombWithManyReflexCorners) {
-  ExpectValidTriangulation({{0, 0, 0}, {10, 0, 0}, {10, 5, 0}, {9, 5, 0}, {9, 1, 0}, {7, 1, 0},
-                            {7, 5, 0}, {6, 5, 0}, {6, 1, 0}, {4, 1, 0}, {4, 5, 0}, {3, 5, 0},
-                            {3, 1, 0}, {1, 1, 0}, {1, 5, 0}, {0, 5, 0}});
+  ExpectValidTriangulation({{0, 0, 0},
+                            {10, 0, 0},
+                            {10, 5, 0},
+                            {9, 5, 0},
+                            {9, 1, 0},
+                            {7, 1, 0},
+                            {7, 5, 0},
+                            {6, 5, 0},
+                            {6, 1, 0},
+                            {4, 1, 0},
+                            {4, 5, 0},
+                            {3, 5, 0},
+                            {3, 1, 0},
+                            {1, 1, 0},
+                            {1, 5, 0},
+                            {0, 5, 0}});
 }
 
 TEST(Triangulate, SlightlyNonPlanarPolygon) {
@@ -129,9 +145,11 @@ TEST(Triangulate, DegenerateInputNeverLoopsOrCrashes) {
 }
 
 TEST(FaceNormal, NewellIsRightWithCollinearLeadingCorners) {
-  const Vec3 n = Normalized(NewellNormal(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}));
+  const Vec3 n = Normalized(
+      NewellNormal(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}));
   EXPECT_NEAR(n.z, 1.0, 1e-15);
-  const Vec3 m = Normalized(NewellNormal(std::vector<Vec3>{{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}));
+  const Vec3 m =
+      Normalized(NewellNormal(std::vector<Vec3>{{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}));
   EXPECT_NEAR(m.z, -1.0, 1e-15);
 }
 

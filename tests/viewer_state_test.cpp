@@ -101,8 +101,7 @@ TEST(ViewerState, BadOpenKeepsTheModelAndSaysWhy) {
 TEST(StatusLine, DropsTheLeastImportantSegmentsFirst) {
   const std::vector<StatusSegment> segments{
       {"model.dat", 0, false}, {"zbuffer contrast", 2, false}, {"theta 0.30", 1, true}};
-  EXPECT_EQ(ComposeStatusLine(segments, 50),
-            "model.dat | zbuffer contrast            theta 0.30");
+  EXPECT_EQ(ComposeStatusLine(segments, 50), "model.dat | zbuffer contrast            theta 0.30");
   EXPECT_EQ(ComposeStatusLine(segments, 25), "model.dat      theta 0.30");
   EXPECT_EQ(ComposeStatusLine(segments, 6), "model.");
 }

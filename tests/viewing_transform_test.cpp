@@ -49,7 +49,8 @@ TEST(ViewingTransform, IsRigidAndPutsTheEyeAtTheOrigin) {
       // Rows of the rotation are orthonormal.
       for (int a = 0; a < 3; ++a) {
         for (int b = 0; b < 3; ++b) {
-          const double dot = v.At(a, 0) * v.At(b, 0) + v.At(a, 1) * v.At(b, 1) + v.At(a, 2) * v.At(b, 2);
+          const double dot =
+              v.At(a, 0) * v.At(b, 0) + v.At(a, 1) * v.At(b, 1) + v.At(a, 2) * v.At(b, 2);
           EXPECT_NEAR(dot, a == b ? 1.0 : 0.0, 1e-14);
         }
       }

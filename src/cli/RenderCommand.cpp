@@ -28,7 +28,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   if (!shade) return UsageError("--shade must be contrast or lambert");
   const auto format = ParseFrameFormat(options.format);
   if (!format) return UsageError("--format must be text, ansi or json");
-  if (const auto problem = ShadeRamp::Problem(options.ramp)) return UsageError("--ramp: " + *problem);
+  if (const auto problem = ShadeRamp::Problem(options.ramp))
+    return UsageError("--ramp: " + *problem);
   if (!std::isfinite(options.theta) || !std::isfinite(options.phi) ||
       !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {
     return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
@@ -73,12 +74,13 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   for (int frame = 0; frame < options.frames; ++frame) {
     ViewParams frameView = view;
     frameView.theta = view.theta + frame * options.stepRadians;
-    const Camera camera = FitCamera(scene, frameView, options.widthCells, options.heightCells,
-                                    options.cellAspect);
+    const Camera camera =
+        FitCamera(scene, frameView, options.widthCells, options.heightCells, options.cellAspect);
     renderer.Render(scene, camera, renderOptions, depth, cells);
     text.clear();
     if (*format == FrameFormat::kText) AppendTextFrame(cells, text);
-    if (*format == FrameFormat::kAnsi) AppendAnsiFrame(cells, renderOptions.ramp.LevelCount(), text);
+    if (*format == FrameFormat::kAnsi)
+      AppendAnsiFrame(cells, renderOptions.ramp.LevelCount(), text);
     if (*format == FrameFormat::kJson) {
       AppendJsonFrame(cells, depth, scene, camera, renderOptions, text);
     }

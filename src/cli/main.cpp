@@ -1,11 +1,11 @@
 // termshade: the command-line front end (SPEC 9). Parses arguments and hands
 // over to the viewer, the headless renderer or the scene generator.
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <exception>
 #include <iostream>
 #include <regex>
-#include <unistd.h>
 
 #include "MethodsBench.h"
 #include "TerminalBench.h"
@@ -65,19 +65,23 @@ void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
       ->check(CLI::Range(0.25, 8.0));
   command.add_option("--theta", options.theta, "eye azimuth, radians (default 0.3)");
   command.add_option("--phi", options.phi, "eye polar angle from +z, radians (default 1.3)");
-  command.add_option("--rho", options.rho,
-                     "eye distance, model units (default 3 x 0.6 x bounding-box diagonal)")
+  command
+      .add_option("--rho", options.rho,
+                  "eye distance, model units (default 3 x 0.6 x bounding-box diagonal)")
       ->check(CLI::PositiveNumber);
 }
 
 void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
-  command.add_option("--method", options.method,
-                     "zbuffer (default), painter, cull, wire, or auto (the cheapest exact one)")
+  command
+      .add_option("--method", options.method,
+                  "zbuffer (default), painter, cull, wire, or auto (the cheapest exact one)")
       ->check(CLI::IsMember({"zbuffer", "painter", "cull", "wire", "auto"}));
   command.add_option("--shade", options.shade, "contrast (default) or lambert")
       ->check(CLI::IsMember({"contrast", "lambert"}));
-  command.add_option("--ramp", options.ramp, "shade characters from dark to bright (default .:-=+*#%@)");
-  command.add_flag("--no-cull", options.noCull, "draw back faces too (shaded from their back side)");
+  command.add_option("--ramp", options.ramp,
+                     "shade characters from dark to bright (default .:-=+*#%@)");
+  command.add_flag("--no-cull", options.noCull,
+                   "draw back faces too (shaded from their back side)");
 }
 
 int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
@@ -144,30 +148,40 @@ int Run(int argc, char** argv) {
   benchCommand->require_subcommand(1);
   termshade::TerminalBenchOptions terminalBench;
   CLI::App* terminalCommand = benchCommand->add_subcommand(
-      "terminal", "bytes and write() calls the viewer sends per frame, idle CPU (runs it in a pty)");
-  terminalCommand->add_option("model", terminalBench.modelPath, "model file (default: the demo scene)");
+      "terminal",
+      "bytes and write() calls the viewer sends per frame, idle CPU (runs it in a pty)");
+  terminalCommand->add_option("model", terminalBench.modelPath,
+                              "model file (default: the demo scene)");
   terminalCommand->add_option("--cols", terminalBench.widthCells, "terminal width (default 160)")
       ->check(CLI::Range(20, 1000));
   terminalCommand->add_option("--rows", terminalBench.heightCells, "terminal height (default 48)")
       ->check(CLI::Range(4, 500));
-  terminalCommand->add_option("--idle-seconds", terminalBench.idleSeconds, "idle period (default 10)")
+  terminalCommand
+      ->add_option("--idle-seconds", terminalBench.idleSeconds, "idle period (default 10)")
       ->check(CLI::Range(0.5, 600.0));
-  terminalCommand->add_option("--turntable-seconds", terminalBench.turntableSeconds,
-                              "turntable period (default 4)")
+  terminalCommand
+      ->add_option("--turntable-seconds", terminalBench.turntableSeconds,
+                   "turntable period (default 4)")
       ->check(CLI::Range(0.5, 600.0));
-  terminalCommand->add_flag("!--no-strace", terminalBench.traceWrites, "do not count write() calls");
+  terminalCommand->add_flag("!--no-strace", terminalBench.traceWrites,
+                            "do not count write() calls");
 
   termshade::MethodsBenchOptions methodsBench;
   CLI::App* methodsCommand = benchCommand->add_subcommand(
       "methods", "speed against error of every method on the same frames (table, CSV, SVG plot)");
-  methodsCommand->add_option("--frames", methodsBench.frames, "turntable frames per scene (default 8)")
+  methodsCommand
+      ->add_option("--frames", methodsBench.frames, "turntable frames per scene (default 8)")
       ->check(CLI::Range(1, 360));
-  methodsCommand->add_option("--seconds", methodsBench.secondsPerCase,
-                             "timing budget per method and scene (default 0.3)")
+  methodsCommand
+      ->add_option("--seconds", methodsBench.secondsPerCase,
+                   "timing budget per method and scene (default 0.3)")
       ->check(CLI::Range(0.01, 60.0));
-  methodsCommand->add_option("--csv", methodsBench.csvPath, "CSV output (default bench-methods.csv)");
-  methodsCommand->add_option("--svg", methodsBench.svgPath, "plot output (default bench-methods.svg)");
-  methodsCommand->add_option("--data", methodsBench.dataDirectory, "the scenes' directory (default data)");
+  methodsCommand->add_option("--csv", methodsBench.csvPath,
+                             "CSV output (default bench-methods.csv)");
+  methodsCommand->add_option("--svg", methodsBench.svgPath,
+                             "plot output (default bench-methods.svg)");
+  methodsCommand->add_option("--data", methodsBench.dataDirectory,
+                             "the scenes' directory (default data)");
 
   bool done = false;
   const int parseCode = ParseOrExit(app, argc, argv, done);

@@ -7,7 +7,9 @@
 namespace termshade {
 namespace {
 
-bool LexLess(Vec3 a, Vec3 b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); }
+bool LexLess(Vec3 a, Vec3 b) {
+  return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+}
 
 // The point where segment ab crosses the plane, the same for ab and ba.
 Vec3 Crossing(Vec3 a, Vec3 b, const ClipPlane& plane) {

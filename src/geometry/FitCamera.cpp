@@ -10,8 +10,7 @@ Camera FitCamera(const Scene& scene, const ViewParams& view, int widthCells, int
 
 Camera FitCameraAt(const Scene& scene, const ViewParams& view, double fitRho, int widthCells,
                    int heightCells, double cellAspect) {
-  return {view,
-          FitProjection(scene.radiusModelUnits, fitRho, widthCells, heightCells, cellAspect)};
+  return {view, FitProjection(scene.radiusModelUnits, fitRho, widthCells, heightCells, cellAspect)};
 }
 
 }  // namespace termshade

@@ -10,7 +10,9 @@
 namespace termshade {
 namespace {
 
-double Coordinate(Vec3 p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
+double Coordinate(Vec3 p, int axis) {
+  return axis == 0 ? p.x : (axis == 1 ? p.y : p.z);
+}
 
 // Crossing-number test in the plane that drops `dropAxis`.
 bool PointInPolygon(const std::vector<Vec3>& corners, Vec3 p, int dropAxis) {
@@ -35,8 +37,7 @@ double DistanceToSegment(double pu, double pv, double au, double av, double bu, 
 
 }  // namespace
 
-ReferenceRayCaster::ReferenceRayCaster(const Scene& scene, const Camera& camera,
-                                       bool cullBackFaces)
+ReferenceRayCaster::ReferenceRayCaster(const Scene& scene, const Camera& camera, bool cullBackFaces)
     : camera_(camera) {
   const Mat4 eyeFromWorld = EyeFromWorld(camera.view);
   const Vec3 eyeWorld = EyePositionWorld(camera.view);
@@ -57,9 +58,8 @@ ReferenceRayCaster::ReferenceRayCaster(const Scene& scene, const Camera& camera,
     mean = mean * (1.0 / static_cast<double>(face.cornersEye.size()));
     face.planeOffset = Dot(face.normalEye, mean);
     const Vec3 n = face.normalEye;
-    face.dropAxis = std::fabs(n.x) > std::fabs(n.y)
-                        ? (std::fabs(n.x) > std::fabs(n.z) ? 0 : 2)
-                        : (std::fabs(n.y) > std::fabs(n.z) ? 1 : 2);
+    face.dropAxis = std::fabs(n.x) > std::fabs(n.y) ? (std::fabs(n.x) > std::fabs(n.z) ? 0 : 2)
+                                                    : (std::fabs(n.y) > std::fabs(n.z) ? 1 : 2);
     // Outline in cells, clipped to the near plane (Sutherland-Hodgman, one plane).
     const size_t count = face.cornersEye.size();
     for (size_t i = 0; i < count; ++i) {
@@ -159,9 +159,8 @@ double ReferenceRayCaster::DistanceToFaceEdgeCells(uint32_t faceNumber, double u
   const size_t count = face.projectedU.size();
   for (size_t i = 0; i < count; ++i) {
     const size_t j = (i + 1) % count;
-    best = std::fmin(best, DistanceToSegment(uCells, vCells, face.projectedU[i],
-                                             face.projectedV[i], face.projectedU[j],
-                                             face.projectedV[j]));
+    best = std::fmin(best, DistanceToSegment(uCells, vCells, face.projectedU[i], face.projectedV[i],
+                                             face.projectedU[j], face.projectedV[j]));
   }
   return best;
 }

@@ -10,10 +10,10 @@ namespace termshade {
 
 /// What the exact reference sees along the ray through one sample.
 struct RaySample {
-  uint32_t faceNumber = 0;         ///< 1-based nearest face, 0 = background
-  double depth = 0.0;              ///< -z (eye) of the nearest hit, 0 for background
-  double secondDepth = 0.0;        ///< -z of the next-nearest hit of another face, 0 if none
-  uint32_t secondFaceNumber = 0;   ///< that face
+  uint32_t faceNumber = 0;        ///< 1-based nearest face, 0 = background
+  double depth = 0.0;             ///< -z (eye) of the nearest hit, 0 for background
+  double secondDepth = 0.0;       ///< -z of the next-nearest hit of another face, 0 if none
+  uint32_t secondFaceNumber = 0;  ///< that face
 };
 
 /// The exact reference of SPEC 8: for a sample in cell coordinates, a

@@ -108,7 +108,8 @@ bool IsConvexClosedSolid(const Scene& scene) {
     const Vec3 n = scene.facePlanesWorld[f].normal;
     if (n == Vec3{}) return false;
     for (uint32_t v : mesh.Face(g)) {
-      if (Dot(n, scene.verticesWorld[v]) - scene.facePlanesWorld[f].offset > tolerance) return false;
+      if (Dot(n, scene.verticesWorld[v]) - scene.facePlanesWorld[f].offset > tolerance)
+        return false;
     }
   }
   for (uint32_t f = 0; f < faceCount; ++f) {

@@ -39,12 +39,12 @@ struct Scene {
   Mat4 worldFromFile;
   std::vector<Vec3> verticesWorld;
   std::vector<SceneTriangle> triangles;
-  std::vector<FacePlane> facePlanesWorld;  ///< per face, world space
+  std::vector<FacePlane> facePlanesWorld;    ///< per face, world space
   std::vector<uint32_t> faceTriangleStarts;  ///< FaceCount() + 1 entries into triangles
   std::vector<SceneEdge> edges;
-  Mesh mesh;                    ///< the source model, for exact references and export
+  Mesh mesh;                        ///< the source model, for exact references and export
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
-  double radiusModelUnits = 0.0;    ///< of the smallest sphere about the origin holding every vertex
+  double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex
   /// One closed, consistently oriented, connected surface with every edge
   /// convex: back-face culling alone draws it exactly (the `auto` method).
   bool convexClosedSolid = false;

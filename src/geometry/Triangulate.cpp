@@ -16,7 +16,9 @@ double Orient(Point2 p, Point2 q, Point2 r) {
   return (q.a - p.a) * (r.b - p.b) - (q.b - p.b) * (r.a - p.a);
 }
 
-bool SamePoint(Point2 p, Point2 q) { return p.a == q.a && p.b == q.b; }
+bool SamePoint(Point2 p, Point2 q) {
+  return p.a == q.a && p.b == q.b;
+}
 
 // True when p lies inside or on triangle (x, y, z), which is counter-clockwise.
 bool InsideOrOn(Point2 p, Point2 x, Point2 y, Point2 z) {

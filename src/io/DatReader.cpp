@@ -12,9 +12,12 @@ namespace {
 
 constexpr int64_t kMaxVertexNumber = std::numeric_limits<int32_t>::max();
 
-bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-bool IsDigit(char c) { return c >= '0' && c <= '9'; }
-
+bool IsBlank(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+bool IsDigit(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // A cursor over one line, with 1-based columns for messages.
 class LineCursor {
@@ -32,7 +35,10 @@ class LineCursor {
   // What stands at the cursor, for messages.
   std::string Found() const {
     if (AtEnd()) return "end of line";
-    return "'" + SanitizeForTerminal(line_.substr(pos_, 1)) + "'";
+    std::string quoted = "'";  // built up: GCC 12 warns falsely on "'" + string + "'"
+    quoted += SanitizeForTerminal(line_.substr(pos_, 1));
+    quoted += '\'';
+    return quoted;
   }
 
   // Digits of an integer; returns false (consuming nothing) if none.
@@ -137,15 +143,14 @@ class DatParser {
     // Step 1: the vertex number.
     const int numberColumn = cursor.Column();
     if (cursor.Peek() == '-' || cursor.Peek() == '+') {
-      Fail(numberColumn, "expected a vertex number (a whole number >= 1) or 'Faces:', found " +
-                             cursor.Found());
+      Fail(numberColumn,
+           "expected a vertex number (a whole number >= 1) or 'Faces:', found " + cursor.Found());
       return;
     }
     int64_t number = 0;
     bool overflow = false;
     if (!cursor.ReadDigits(number, overflow)) {
-      Fail(numberColumn,
-           "expected a vertex number or 'Faces:', found " + cursor.Found());
+      Fail(numberColumn, "expected a vertex number or 'Faces:', found " + cursor.Found());
       return;
     }
     if (overflow) {
@@ -204,8 +209,7 @@ class DatParser {
     }
     cursor.Advance(length);
     if (!(cursor.AtEnd() || IsBlank(cursor.Peek()))) {
-      Fail(cursor.Column(),
-           "expected a blank after " + what + ", found " + cursor.Found());
+      Fail(cursor.Column(), "expected a blank after " + what + ", found " + cursor.Found());
       return false;
     }
     return true;
@@ -244,8 +248,7 @@ class DatParser {
     bool overflow = false;
     if (!cursor.ReadDigits(number, overflow)) {
       Fail(cursor.Column(),
-           "expected a vertex number, or '.' or '#' to end the face, found " +
-               cursor.Found());
+           "expected a vertex number, or '.' or '#' to end the face, found " + cursor.Found());
       return;
     }
     const char next = cursor.Peek();

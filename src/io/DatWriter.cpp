@@ -7,8 +7,8 @@ namespace termshade {
 std::string FormatCoordinate(double value) {
   if (value == 0.0) return "0";
   char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value,
-                                    std::chars_format::general, 9);
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 9);
   return {buffer, result.ptr};
 }
 
@@ -16,8 +16,8 @@ std::string WriteDat(const Mesh& mesh) {
   std::string out;
   for (size_t i = 0; i < mesh.verticesFile.size(); ++i) {
     const Vec3& p = mesh.verticesFile[i];
-    out += std::to_string(i + 1) + ' ' + FormatCoordinate(p.x) + ' ' + FormatCoordinate(p.y) +
-           ' ' + FormatCoordinate(p.z) + '\n';
+    out += std::to_string(i + 1) + ' ' + FormatCoordinate(p.x) + ' ' + FormatCoordinate(p.y) + ' ' +
+           FormatCoordinate(p.z) + '\n';
   }
   out += "Faces:\n";
   for (size_t f = 0; f < mesh.FaceCount(); ++f) {

@@ -116,7 +116,8 @@ void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Sc
     AppendJsonString(cells.RowText(row), out);
   }
   out += ']';
-  AppendGrid(cells, "faces", [&](size_t i) { AppendNumber(cells.FaceNumbers()[i], out); }, out);
+  AppendGrid(
+      cells, "faces", [&](size_t i) { AppendNumber(cells.FaceNumbers()[i], out); }, out);
   AppendGrid(
       cells, "depth",
       [&](size_t i) {

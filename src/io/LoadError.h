@@ -22,8 +22,8 @@ struct LoadError {
 template <typename T>
 class Loaded {
  public:
-  Loaded(T value) : state_(std::move(value)) {}             // NOLINT(google-explicit-constructor)
-  Loaded(LoadError error) : state_(std::move(error)) {}     // NOLINT(google-explicit-constructor)
+  Loaded(T value) : state_(std::move(value)) {}          // NOLINT(google-explicit-constructor)
+  Loaded(LoadError error) : state_(std::move(error)) {}  // NOLINT(google-explicit-constructor)
 
   bool Ok() const { return std::holds_alternative<T>(state_); }
   T& Value() { return std::get<T>(state_); }

@@ -70,9 +70,9 @@ void AppendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& par
 Loaded<Mesh> ImportWithAssimp(const std::string& path, const std::string& bytes) {
   Assimp::Importer importer;
   const std::string ext = LowerExtension(path);
-  const aiScene* scene = importer.ReadFileFromMemory(
-      bytes.data(), bytes.size(), aiProcess_JoinIdenticalVertices,
-      ext.size() > 1 ? ext.c_str() + 1 : "");
+  const aiScene* scene =
+      importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_JoinIdenticalVertices,
+                                  ext.size() > 1 ? ext.c_str() + 1 : "");
   if (scene == nullptr || scene->mRootNode == nullptr) {
     return LoadError{path, 0, 0, "cannot import: " + std::string(importer.GetErrorString())};
   }

@@ -87,9 +87,10 @@ Mesh Beams() {
       const Vec3 axis = base + along * t + Vec3{0, 0, 0.5 - slope * t};
       return axis + side * a + Vec3{0, 0, b};
     };
-    AddExtrusion(mesh,
-                 {{-kHalfWidth, 0}, {kHalfWidth, 0}, {kHalfWidth, kThickness}, {-kHalfWidth, kThickness}},
-                 2.0 * kHalfLength, frame);
+    AddExtrusion(
+        mesh,
+        {{-kHalfWidth, 0}, {kHalfWidth, 0}, {kHalfWidth, kThickness}, {-kHalfWidth, kThickness}},
+        2.0 * kHalfLength, frame);
   }
   return mesh;
 }
@@ -102,8 +103,8 @@ void AddBandedSurface(Mesh& mesh, int rings, int segments,
     const int next = (j + 1) % segments;
     mesh.AddFace(std::array<uint32_t, 3>{topPole, ring(0, j), ring(0, next)});
     for (int i = 0; i + 1 < rings; ++i) {
-      mesh.AddFace(std::array<uint32_t, 4>{ring(i, j), ring(i + 1, j), ring(i + 1, next),
-                                           ring(i, next)});
+      mesh.AddFace(
+          std::array<uint32_t, 4>{ring(i, j), ring(i + 1, j), ring(i + 1, next), ring(i, next)});
     }
     if (bottomPole) {
       mesh.AddFace(std::array<uint32_t, 3>{ring(rings - 1, j), *bottomPole, ring(rings - 1, next)});

@@ -15,8 +15,9 @@ FaceErrorReport MeasureFaceError(const Scene& scene, const Camera& camera, bool 
       const RaySample exact = reference.Cast(u, v);
       const uint32_t drawn = cells.FaceNumber(col, row);
       // Step 1: the edge band of either face.
-      const bool nearEdge = reference.DistanceToFaceEdgeCells(exact.faceNumber, u, v) <= kEdgeBandCells ||
-                            reference.DistanceToFaceEdgeCells(drawn, u, v) <= kEdgeBandCells;
+      const bool nearEdge =
+          reference.DistanceToFaceEdgeCells(exact.faceNumber, u, v) <= kEdgeBandCells ||
+          reference.DistanceToFaceEdgeCells(drawn, u, v) <= kEdgeBandCells;
       // Step 2: the two nearest surfaces closer than the method can tell apart.
       bool tooClose = false;
       if (options.excludeCloseDepths && exact.faceNumber != 0 && exact.secondFaceNumber != 0) {

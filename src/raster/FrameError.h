@@ -8,9 +8,9 @@ namespace termshade {
 
 /// Face error of a frame against the exact reference (SPEC 8).
 struct FaceErrorReport {
-  int comparedCells = 0;   ///< cells outside the don't-care band
-  int dontCareCells = 0;   ///< near a projected edge, or two surfaces too close in depth
-  int wrongCells = 0;      ///< compared cells whose face differs from the reference
+  int comparedCells = 0;  ///< cells outside the don't-care band
+  int dontCareCells = 0;  ///< near a projected edge, or two surfaces too close in depth
+  int wrongCells = 0;     ///< compared cells whose face differs from the reference
   double Share() const { return comparedCells > 0 ? double(wrongCells) / comparedCells : 0.0; }
 };
 

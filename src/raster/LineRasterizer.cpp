@@ -46,8 +46,8 @@ void DrawLine(const CellPoint& a, const CellPoint& b, double cellAspect, uint32_
   if (first > last) {
     if (high - low < 1.0) {  // shorter than a cell: mark the cell of its midpoint
       Plot(static_cast<int>(std::floor(0.5 * (a.u + b.u))),
-           static_cast<int>(std::floor(0.5 * (a.v + b.v))),
-           static_cast<float>(0.5 * (a.w + b.w)), glyph, faceNumber, level, depth, cells);
+           static_cast<int>(std::floor(0.5 * (a.v + b.v))), static_cast<float>(0.5 * (a.w + b.w)),
+           glyph, faceNumber, level, depth, cells);
     }
     return;
   }

@@ -20,8 +20,7 @@ constexpr std::array<std::pair<ShadeMode, std::string_view>, 2> kShadeNames{{
 }};
 
 template <typename Enum, size_t N>
-std::string_view NameOf(const std::array<std::pair<Enum, std::string_view>, N>& table,
-                        Enum value) {
+std::string_view NameOf(const std::array<std::pair<Enum, std::string_view>, N>& table, Enum value) {
   for (const auto& [candidate, name] : table) {
     if (candidate == value) return name;
   }
@@ -39,9 +38,15 @@ std::optional<Enum> ValueOf(const std::array<std::pair<Enum, std::string_view>, 
 
 }  // namespace
 
-std::string_view MethodName(Method method) { return NameOf(kMethodNames, method); }
-std::optional<Method> ParseMethod(std::string_view name) { return ValueOf(kMethodNames, name); }
-std::string_view ShadeModeName(ShadeMode mode) { return NameOf(kShadeNames, mode); }
+std::string_view MethodName(Method method) {
+  return NameOf(kMethodNames, method);
+}
+std::optional<Method> ParseMethod(std::string_view name) {
+  return ValueOf(kMethodNames, name);
+}
+std::string_view ShadeModeName(ShadeMode mode) {
+  return NameOf(kShadeNames, mode);
+}
 std::optional<ShadeMode> ParseShadeMode(std::string_view name) {
   return ValueOf(kShadeNames, name);
 }

@@ -29,7 +29,8 @@ Vec3 TransformInFloat(const Mat4& eyeFromWorld, Vec3 pWorld) {
 
 RasterVertex ProjectInFloat(const Projection& proj, Vec3 pEye) {
   const float w = -1.0F / static_cast<float>(pEye.z);
-  const float u = static_cast<float>(proj.cx) + static_cast<float>(proj.d) * static_cast<float>(pEye.x) * w;
+  const float u =
+      static_cast<float>(proj.cx) + static_cast<float>(proj.d) * static_cast<float>(pEye.x) * w;
   const float v = static_cast<float>(proj.cy) -
                   static_cast<float>(proj.d / proj.cellAspect) * static_cast<float>(pEye.y) * w;
   return {SnapToFixed(u), SnapToFixed(v), w};
@@ -47,8 +48,8 @@ Method ResolvedMethod(const Scene& scene, Method method) {
   return scene.convexClosedSolid ? Method::kCull : Method::kZBuffer;
 }
 
-RenderStats Renderer::Render(const Scene& scene, const Camera& camera,
-                             const RenderOptions& options, DepthBuffer& depth, CellBuffer& cells) {
+RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const RenderOptions& options,
+                             DepthBuffer& depth, CellBuffer& cells) {
   if (options.variant.samplesPerAxis > 1 && options.method != Method::kWire) {
     return RenderSupersampled(scene, camera, options, depth, cells);
   }
@@ -134,7 +135,8 @@ float Renderer::ProjectVertices(const Scene& scene, const Projection& proj, bool
   // A vertex this far inside every clip plane is inside for certain, whatever
   // the rounding; only the others need the exact out-codes.
   const double nearZ = 2.0 * -clipPlanes_[0].offset;
-  const double xLimit = 0.5 * (kClipRangeCells - proj.cx), yLimit = 0.5 * (kClipRangeCells - proj.cy);
+  const double xLimit = 0.5 * (kClipRangeCells - proj.cx),
+               yLimit = 0.5 * (kClipRangeCells - proj.cy);
   // Locals, not members: the stores below (zEye_ is double) could otherwise
   // alias the matrix and force it to be reloaded for every vertex.
   const Mat4 m = eyeFromWorld_;
@@ -153,10 +155,9 @@ float Renderer::ProjectVertices(const Scene& scene, const Projection& proj, bool
     const double xCells = d * pEye.x * w, yCells = vScale * pEye.y * w;
     if (pEye.z <= -nearZ && std::fabs(xCells) <= xLimit && std::fabs(yCells) <= yLimit) {
       codes[i] = 0;
-      raster[i] = kFloatGeometry
-                      ? ProjectInFloat(proj, pEye)
-                      : RasterVertex{SnapToFixed(cx + xCells), SnapToFixed(cy - yCells),
-                                     static_cast<float>(w)};
+      raster[i] = kFloatGeometry ? ProjectInFloat(proj, pEye)
+                                 : RasterVertex{SnapToFixed(cx + xCells), SnapToFixed(cy - yCells),
+                                                static_cast<float>(w)};
       maxW = std::max(maxW, raster[i].w);
       continue;
     }
@@ -204,9 +205,10 @@ int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t tr
   }
   if ((codes[0] & codes[1] & codes[2]) != 0) return 0;
   // Rare: recompute eye coordinates rather than store them for every vertex.
-  const std::array<Vec3, 3> cornersEye{TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[0]]),
-                                       TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[1]]),
-                                       TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[2]])};
+  const std::array<Vec3, 3> cornersEye{
+      TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[0]]),
+      TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[1]]),
+      TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[2]])};
   if (!IsFinite(cornersEye[0]) || !IsFinite(cornersEye[1]) || !IsFinite(cornersEye[2])) return 0;
   ClippedPolygon clipped;
   ClipTriangle(cornersEye, clipPlanes_, clipped);
@@ -232,8 +234,8 @@ void Renderer::Rasterize(const RasterVertex& a, const RasterVertex& b, const Ras
   }
 }
 
-int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera,
-                           const RenderOptions& options, DepthBuffer& depth, CellBuffer& cells) {
+int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const RenderOptions& options,
+                           DepthBuffer& depth, CellBuffer& cells) {
   int drawn = 0;
   const bool cull = options.cullBackFaces;
   // Face by face: a face behind its plane is skipped whole, its triangles never read.
@@ -244,7 +246,8 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera,
       if (cull && !FaceIsFront(scene, f)) continue;
       for (uint32_t i = scene.faceTriangleStarts[f]; i < scene.faceTriangleStarts[f + 1]; ++i) {
         const SceneTriangle& t = scene.triangles[i];
-        painterOrder_.emplace_back(zEye_[t.vertices[0]] + zEye_[t.vertices[1]] + zEye_[t.vertices[2]], i);
+        painterOrder_.emplace_back(
+            zEye_[t.vertices[0]] + zEye_[t.vertices[1]] + zEye_[t.vertices[2]], i);
       }
     }
     std::sort(painterOrder_.begin(), painterOrder_.end());
@@ -320,16 +323,18 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
   double minDot = INFINITY, maxDot = -INFINITY;
   seenSunDots_.clear();
   for (uint32_t f : seenFaces_) {
-    const double dot = Dot(scene.facePlanesWorld[f].normal, sunWorld) * (FaceIsFront(scene, f) ? 1.0 : -1.0);
+    const double dot =
+        Dot(scene.facePlanesWorld[f].normal, sunWorld) * (FaceIsFront(scene, f) ? 1.0 : -1.0);
     seenSunDots_.push_back(dot);
     minDot = std::min(minDot, dot);
     maxDot = std::max(maxDot, dot);
   }
   // Step 3: levels per face, then glyphs per cell.
   for (size_t i = 0; i < seenFaces_.size(); ++i) {
-    const double intensity = options.shade == ShadeMode::kContrast
-                                 ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, options.ambient)
-                                 : LambertIntensity(seenSunDots_[i], options.ambient);
+    const double intensity =
+        options.shade == ShadeMode::kContrast
+            ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, options.ambient)
+            : LambertIntensity(seenSunDots_[i], options.ambient);
     faceLevels_[seenFaces_[i]] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
   }
   if (options.method != Method::kWire) {

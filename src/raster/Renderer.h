@@ -34,7 +34,8 @@ class Renderer {
 
  private:
   RenderStats RenderSupersampled(const Scene& scene, const Camera& camera,
-                                 const RenderOptions& options, DepthBuffer& depth, CellBuffer& cells);
+                                 const RenderOptions& options, DepthBuffer& depth,
+                                 CellBuffer& cells);
   void TransformVertices(const Scene& scene, const Camera& camera, const RenderVariant& variant,
                          bool needEyeZ);
   template <bool kFloatGeometry>
@@ -56,14 +57,14 @@ class Renderer {
   DepthEncoding depthEncoding_;
   bool scanline_ = false;
   float maxW_ = 0.0F;
-  CellBuffer fineCells_;   ///< supersampled variants: the frame at k x k samples a cell
+  CellBuffer fineCells_;  ///< supersampled variants: the frame at k x k samples a cell
   DepthBuffer fineDepth_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
   std::vector<uint8_t> outCodes_;
-  std::vector<int16_t> faceLevels_;     ///< per face: ramp level; -1 between frames
-  std::vector<uint32_t> seenFaces_;     ///< faces seen in some cell this frame
-  std::vector<double> seenSunDots_;     ///< their n.s, n turned towards the eye
+  std::vector<int16_t> faceLevels_;  ///< per face: ramp level; -1 between frames
+  std::vector<uint32_t> seenFaces_;  ///< faces seen in some cell this frame
+  std::vector<double> seenSunDots_;  ///< their n.s, n turned towards the eye
   std::vector<std::pair<double, uint32_t>> painterOrder_;
 };
 

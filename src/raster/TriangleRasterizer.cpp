@@ -36,7 +36,6 @@ void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
   last = std::min(limit - 1, (high - kFixedHalf) >> kSubCellBits);
 }
 
-
 // Depth at a sample from the three edge weights, per format.
 template <DepthFormat kFormat>
 struct DepthInterpolator {
@@ -56,8 +55,8 @@ struct DepthInterpolator {
     }
   }
   float operator()(int64_t e12, int64_t e20, int64_t e01) const {
-    const float value = static_cast<float>(e12) * k0 + static_cast<float>(e20) * k1 +
-                        static_cast<float>(e01) * k2;
+    const float value =
+        static_cast<float>(e12) * k0 + static_cast<float>(e20) * k1 + static_cast<float>(e01) * k2;
     if constexpr (kFormat == DepthFormat::kLinearZ) return 1.0F / value;
     if constexpr (kFormat == DepthFormat::kFixed16InverseZ) {
       return std::min(65535.0F, std::floor(value * scale)) / scale;
@@ -78,13 +77,16 @@ int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const Raster
                       const DepthEncoding& encoding) {
   switch (encoding.format) {
     case DepthFormat::kLinearZ:
-      return RasterizeWith<DepthFormat::kLinearZ>(a, b, c, faceNumber, rule, depth, cells, encoding);
+      return RasterizeWith<DepthFormat::kLinearZ>(a, b, c, faceNumber, rule, depth, cells,
+                                                  encoding);
     case DepthFormat::kFixed16InverseZ:
       return RasterizeWith<DepthFormat::kFixed16InverseZ>(a, b, c, faceNumber, rule, depth, cells,
                                                           encoding);
-    case DepthFormat::kFloatInverseZ: break;
+    case DepthFormat::kFloatInverseZ:
+      break;
   }
-  return RasterizeWith<DepthFormat::kFloatInverseZ>(a, b, c, faceNumber, rule, depth, cells, encoding);
+  return RasterizeWith<DepthFormat::kFloatInverseZ>(a, b, c, faceNumber, rule, depth, cells,
+                                                    encoding);
 }
 
 namespace {
@@ -98,7 +100,8 @@ int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVert
   int col0 = 0, col1 = 0, row0 = 0, row1 = 0;
   SampleRange(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}), cells.WidthCells(), col0, col1);
   if (col0 > col1) return 0;
-  SampleRange(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), cells.HeightCells(), row0, row1);
+  SampleRange(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), cells.HeightCells(), row0,
+              row1);
   if (row0 > row1) return 0;
 
   // Step 2: orient clockwise on screen (positive area); drop empty triangles.
@@ -162,7 +165,8 @@ int RasterizeTriangleScanline(const RasterVertex& a, const RasterVertex& b, cons
     float u, v, w;
   };
   // Step 1: float positions in cells, sorted top to bottom.
-  Point p[3] = {{a.x / 256.0F, a.y / 256.0F, a.w}, {b.x / 256.0F, b.y / 256.0F, b.w},
+  Point p[3] = {{a.x / 256.0F, a.y / 256.0F, a.w},
+                {b.x / 256.0F, b.y / 256.0F, b.w},
                 {c.x / 256.0F, c.y / 256.0F, c.w}};
   std::sort(std::begin(p), std::end(p), [](const Point& l, const Point& r) { return l.v < r.v; });
   const float height = p[2].v - p[0].v;
@@ -172,7 +176,8 @@ int RasterizeTriangleScanline(const RasterVertex& a, const RasterVertex& b, cons
   int written = 0;
   auto& faces = cells.FaceNumbers();
   const int firstRow = std::max(0, static_cast<int>(std::ceil(p[0].v - 0.5F)));
-  const int lastRow = std::min(cells.HeightCells() - 1, static_cast<int>(std::ceil(p[2].v - 0.5F)) - 1);
+  const int lastRow =
+      std::min(cells.HeightCells() - 1, static_cast<int>(std::ceil(p[2].v - 0.5F)) - 1);
   float longU = p[0].u + (firstRow + 0.5F - p[0].v) * longDu;
   float longW = p[0].w + (firstRow + 0.5F - p[0].v) * longDw;
   for (int row = firstRow; row <= lastRow; ++row, longU += longDu, longW += longDw) {
@@ -190,13 +195,15 @@ int RasterizeTriangleScanline(const RasterVertex& a, const RasterVertex& b, cons
     }
     // Step 3: the span's samples, w stepped along the row.
     const int firstCol = std::max(0, static_cast<int>(std::ceil(leftU - 0.5F)));
-    const int lastCol = std::min(cells.WidthCells() - 1, static_cast<int>(std::ceil(rightU - 0.5F)) - 1);
+    const int lastCol =
+        std::min(cells.WidthCells() - 1, static_cast<int>(std::ceil(rightU - 0.5F)) - 1);
     const float dw = rightU > leftU ? (rightW - leftW) / (rightU - leftU) : 0.0F;
     float w = leftW + (firstCol + 0.5F - leftU) * dw;
     size_t index = cells.Index(std::max(0, firstCol), row);
     for (int col = firstCol; col <= lastCol; ++col, ++index, w += dw) {
       float& stored = depth.At(index);
-      if (rule == DepthRule::kOverwrite || w > stored || (w == stored && faceNumber < faces[index])) {
+      if (rule == DepthRule::kOverwrite || w > stored ||
+          (w == stored && faceNumber < faces[index])) {
         stored = w;
         faces[index] = faceNumber;
         ++written;

@@ -22,8 +22,10 @@ inline bool MayCoverSample(const RasterVertex& a, const RasterVertex& b, const R
   // Samples sit at 256 k + 128: the box must contain one in x and in y.
   const int32_t minX = std::min({a.x, b.x, c.x}), maxX = std::max({a.x, b.x, c.x});
   const int32_t minY = std::min({a.y, b.y, c.y}), maxY = std::max({a.y, b.y, c.y});
-  const int32_t firstCol = std::max(0, (minX + 127) >> 8), lastCol = std::min(widthCells - 1, (maxX - 128) >> 8);
-  const int32_t firstRow = std::max(0, (minY + 127) >> 8), lastRow = std::min(heightCells - 1, (maxY - 128) >> 8);
+  const int32_t firstCol = std::max(0, (minX + 127) >> 8),
+                lastCol = std::min(widthCells - 1, (maxX - 128) >> 8);
+  const int32_t firstRow = std::max(0, (minY + 127) >> 8),
+                lastRow = std::min(heightCells - 1, (maxY - 128) >> 8);
   return firstCol <= lastCol && firstRow <= lastRow;
 }
 

@@ -5,7 +5,9 @@
 
 namespace termshade {
 
-Vec3 DefaultSunEye() { return Normalized({-1.0, 1.0, 1.0}); }
+Vec3 DefaultSunEye() {
+  return Normalized({-1.0, 1.0, 1.0});
+}
 
 Vec3 SunFromAngles(double azimuth, double elevation) {
   // Rotate the default sun about the eye's y axis, then tilt it about x.

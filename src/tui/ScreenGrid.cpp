@@ -24,6 +24,8 @@ void ScreenGrid::FillRow(int row, CellStyle style) {
   for (int col = 0; col < widthCells_; ++col) At(col, row) = {' ', style, 0};
 }
 
-void ScreenGrid::Clear() { std::fill(cells_.begin(), cells_.end(), ScreenCell{}); }
+void ScreenGrid::Clear() {
+  std::fill(cells_.begin(), cells_.end(), ScreenCell{});
+}
 
 }  // namespace termshade

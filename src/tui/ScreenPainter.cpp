@@ -13,7 +13,8 @@ void ScreenPainter::PaintFrame(const CellBuffer& cells, ScreenGrid& grid) const 
   for (int row = 0; row < rows; ++row) {
     for (int col = 0; col < cols; ++col) {
       const int level = cells.Level(col, row);
-      grid.At(col, row) = {cells.Glyph(col, row), level < 0 ? CellStyle::kBackground : CellStyle::kFace,
+      grid.At(col, row) = {cells.Glyph(col, row),
+                           level < 0 ? CellStyle::kBackground : CellStyle::kFace,
                            static_cast<int8_t>(std::max(0, level))};
     }
   }

@@ -30,7 +30,8 @@ std::string ComposeStatusLine(const std::vector<StatusSegment>& segments, int wi
     // Drop the least important segment still shown, unless it is the last one.
     int worst = -1;
     for (size_t i = 0; i < segments.size(); ++i) {
-      if (kept[i] && (worst < 0 || segments[i].priority > segments[static_cast<size_t>(worst)].priority)) {
+      if (kept[i] &&
+          (worst < 0 || segments[i].priority > segments[static_cast<size_t>(worst)].priority)) {
         worst = static_cast<int>(i);
       }
     }

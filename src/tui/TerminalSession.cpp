@@ -7,8 +7,8 @@
 
 #include <atomic>
 #include <csignal>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace termshade {
@@ -75,9 +75,15 @@ TerminalSession::TerminalSession() {
   }
 }
 
-int TerminalSession::NextKey() { return wgetch(static_cast<WINDOW*>(inputPad_)); }
-int TerminalSession::WidthCells() { return COLS; }
-int TerminalSession::HeightCells() { return LINES; }
+int TerminalSession::NextKey() {
+  return wgetch(static_cast<WINDOW*>(inputPad_));
+}
+int TerminalSession::WidthCells() {
+  return COLS;
+}
+int TerminalSession::HeightCells() {
+  return LINES;
+}
 
 TerminalSession::~TerminalSession() {
   if (inputPad_ != nullptr) delwin(static_cast<WINDOW*>(inputPad_));

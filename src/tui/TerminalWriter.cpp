@@ -114,8 +114,8 @@ void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount
   const bool avoidLastCell = tigetflag("am") == 1 && tigetflag("xenl") != 1;
   for (int row = 0; row < grid.HeightCells(); ++row) {
     int col = 0;
-    const int rowEnd = avoidLastCell && row == grid.HeightCells() - 1 ? grid.WidthCells() - 1
-                                                                      : grid.WidthCells();
+    const int rowEnd =
+        avoidLastCell && row == grid.HeightCells() - 1 ? grid.WidthCells() - 1 : grid.WidthCells();
     while (col < rowEnd) {
       const bool changed = !(grid.At(col, row) == previous_.At(col, row));
       if (!changed) {

@@ -15,8 +15,8 @@
 #include "tui/LineEditor.h"
 #include "tui/ScreenPainter.h"
 #include "tui/StatusLine.h"
-#include "tui/TerminalWriter.h"
 #include "tui/TerminalSession.h"
+#include "tui/TerminalWriter.h"
 #include "tui/ViewerState.h"
 
 namespace termshade {
@@ -30,16 +30,26 @@ constexpr auto kTurntablePeriod = std::chrono::milliseconds(40);  // at most 25 
 
 std::optional<NamedKey> NamedKeyFor(int key) {
   switch (key) {
-    case KEY_LEFT: return NamedKey::kLeft;
-    case KEY_RIGHT: return NamedKey::kRight;
-    case KEY_UP: return NamedKey::kUp;
-    case KEY_DOWN: return NamedKey::kDown;
-    case KEY_PPAGE: return NamedKey::kPageUp;
-    case KEY_NPAGE: return NamedKey::kPageDown;
-    case KEY_IC: return NamedKey::kInsert;
-    case KEY_DC: return NamedKey::kDelete;
-    case 27: return NamedKey::kEscape;
-    default: return std::nullopt;
+    case KEY_LEFT:
+      return NamedKey::kLeft;
+    case KEY_RIGHT:
+      return NamedKey::kRight;
+    case KEY_UP:
+      return NamedKey::kUp;
+    case KEY_DOWN:
+      return NamedKey::kDown;
+    case KEY_PPAGE:
+      return NamedKey::kPageUp;
+    case KEY_NPAGE:
+      return NamedKey::kPageDown;
+    case KEY_IC:
+      return NamedKey::kInsert;
+    case KEY_DC:
+      return NamedKey::kDelete;
+    case 27:
+      return NamedKey::kEscape;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -55,8 +65,8 @@ class EventLoop {
       // Step 1: sleep until input, a signal, or the next turntable frame.
       int timeoutMs = -1;
       if (state_.Turntable()) {
-        const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(
-            nextTurntableFrame - Clock::now());
+        const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(nextTurntableFrame -
+                                                                                Clock::now());
         timeoutMs = static_cast<int>(std::max<long long>(0, wait.count()));
       }
       pollfd fds[2] = {{STDIN_FILENO, POLLIN, 0}, {session_.SignalFd(), POLLIN, 0}};
@@ -96,7 +106,8 @@ class EventLoop {
     ViewerAction action = ViewerAction::kNone;
     if (const auto named = NamedKeyFor(key)) {
       action = ActionForNamedKey(*named);
-      if (*named == NamedKey::kEscape && state_.LightMode()) action = ViewerAction::kToggleLightMode;
+      if (*named == NamedKey::kEscape && state_.LightMode())
+        action = ViewerAction::kToggleLightMode;
     } else if (key >= 0 && key < 128) {
       action = ActionForChar(key);
     }
@@ -113,7 +124,9 @@ class EventLoop {
 
   void HandlePromptKey(int key) {
     switch (key) {
-      case 27: prompting_ = false; break;
+      case 27:
+        prompting_ = false;
+        break;
       case '\r':
       case '\n':
       case KEY_ENTER:
@@ -122,16 +135,31 @@ class EventLoop {
         break;
       case KEY_BACKSPACE:
       case 127:
-      case 8: editor_.Backspace(); break;
-      case KEY_DC: editor_.Delete(); break;
-      case KEY_LEFT: editor_.Left(); break;
-      case KEY_RIGHT: editor_.Right(); break;
+      case 8:
+        editor_.Backspace();
+        break;
+      case KEY_DC:
+        editor_.Delete();
+        break;
+      case KEY_LEFT:
+        editor_.Left();
+        break;
+      case KEY_RIGHT:
+        editor_.Right();
+        break;
       case KEY_HOME:
-      case 1: editor_.Home(); break;
+      case 1:
+        editor_.Home();
+        break;
       case KEY_END:
-      case 5: editor_.End(); break;
-      case 21: editor_.Clear(); break;
-      case KEY_RESIZE: break;
+      case 5:
+        editor_.End();
+        break;
+      case 21:
+        editor_.Clear();
+        break;
+      case KEY_RESIZE:
+        break;
       default:
         if (key >= 0x20 && key < 0x7f) editor_.Insert(static_cast<char>(key));
     }
@@ -147,8 +175,7 @@ class EventLoop {
       dragging_ = true;
       dragCol_ = event.x;
       dragRow_ = event.y;
-    } else if (dragging_ &&
-               (event.bstate & (REPORT_MOUSE_POSITION | BUTTON1_RELEASED)) != 0) {
+    } else if (dragging_ && (event.bstate & (REPORT_MOUSE_POSITION | BUTTON1_RELEASED)) != 0) {
       state_.Drag(event.x - dragCol_, event.y - dragRow_);
       dragCol_ = event.x;
       dragRow_ = event.y;
@@ -172,9 +199,8 @@ class EventLoop {
     cells_.Resize(cols, frameRows);
     depth_.Resize(cols, frameRows);
     const auto start = Clock::now();
-    const RenderStats stats =
-        renderer_.Render(state_.CurrentScene(), state_.CameraFor(cols, frameRows), state_.Render(),
-                         depth_, cells_);
+    const RenderStats stats = renderer_.Render(
+        state_.CurrentScene(), state_.CameraFor(cols, frameRows), state_.Render(), depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     painter_.PaintFrame(cells_, grid_);
     // Step 2: overlays and the status line, then one write of what changed.
@@ -200,8 +226,8 @@ class EventLoop {
                   state_.CurrentScene().FaceCount(), stats.trianglesDrawn);
     std::snprintf(timeText, sizeof timeText, "%.2f ms", frameMs);
     std::string lead = state_.Message();
-    if (lead.empty()) lead = state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends"
-                                                : state_.ModelLabel();
+    if (lead.empty())
+      lead = state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends" : state_.ModelLabel();
     const std::string method = std::string(MethodName(render.method)) + " " +
                                std::string(ShadeModeName(render.shade)) +
                                (render.cullBackFaces ? "" : " 2-sided");

@@ -22,8 +22,8 @@ std::string StatusLineError(LoadError error) {
 }  // namespace
 
 Loaded<Scene> LoadViewerScene(const std::string& path) {
-  Loaded<Mesh> mesh = path.empty() ? ParseDat(DemoSceneText(), std::string(kDemoSceneName))
-                                   : LoadModelFile(path);
+  Loaded<Mesh> mesh =
+      path.empty() ? ParseDat(DemoSceneText(), std::string(kDemoSceneName)) : LoadModelFile(path);
   if (!mesh.Ok()) return mesh.Error();
   return PrepareScene(std::move(mesh.Value()));
 }
@@ -94,15 +94,32 @@ void ViewerState::ChangeDistance(double factor) {
 
 void ViewerState::Apply(ViewerAction action) {
   switch (action) {
-    case ViewerAction::kNone: break;
-    case ViewerAction::kOrbitLeft: Orbit(-kOrbitStepRadians, 0.0); break;
-    case ViewerAction::kOrbitRight: Orbit(kOrbitStepRadians, 0.0); break;
-    case ViewerAction::kOrbitUp: Orbit(0.0, -kOrbitStepRadians); break;
-    case ViewerAction::kOrbitDown: Orbit(0.0, kOrbitStepRadians); break;
-    case ViewerAction::kCloser: ChangeDistance(0.5); break;
-    case ViewerAction::kFarther: ChangeDistance(2.0); break;
-    case ViewerAction::kResetView: ResetView(); break;
-    case ViewerAction::kRefit: fitRho_ = view_.rho; break;
+    case ViewerAction::kNone:
+      break;
+    case ViewerAction::kOrbitLeft:
+      Orbit(-kOrbitStepRadians, 0.0);
+      break;
+    case ViewerAction::kOrbitRight:
+      Orbit(kOrbitStepRadians, 0.0);
+      break;
+    case ViewerAction::kOrbitUp:
+      Orbit(0.0, -kOrbitStepRadians);
+      break;
+    case ViewerAction::kOrbitDown:
+      Orbit(0.0, kOrbitStepRadians);
+      break;
+    case ViewerAction::kCloser:
+      ChangeDistance(0.5);
+      break;
+    case ViewerAction::kFarther:
+      ChangeDistance(2.0);
+      break;
+    case ViewerAction::kResetView:
+      ResetView();
+      break;
+    case ViewerAction::kRefit:
+      fitRho_ = view_.rho;
+      break;
     case ViewerAction::kCycleMethod: {
       static constexpr Method kOrder[] = {Method::kZBuffer, Method::kPainter, Method::kCull,
                                           Method::kWire};
@@ -114,19 +131,38 @@ void ViewerState::Apply(ViewerAction action) {
       render_.shade =
           render_.shade == ShadeMode::kContrast ? ShadeMode::kLambert : ShadeMode::kContrast;
       break;
-    case ViewerAction::kToggleColour: colour_ = !colour_; break;
-    case ViewerAction::kToggleLightMode: lightMode_ = !lightMode_; break;
-    case ViewerAction::kToggleTurntable: turntable_ = !turntable_; break;
-    case ViewerAction::kToggleCulling: render_.cullBackFaces = !render_.cullBackFaces; break;
-    case ViewerAction::kOpenFile: break;  // the event loop owns the prompt
-    case ViewerAction::kNextModel: SwitchTo((current_ + 1) % paths_.size()); break;
+    case ViewerAction::kToggleColour:
+      colour_ = !colour_;
+      break;
+    case ViewerAction::kToggleLightMode:
+      lightMode_ = !lightMode_;
+      break;
+    case ViewerAction::kToggleTurntable:
+      turntable_ = !turntable_;
+      break;
+    case ViewerAction::kToggleCulling:
+      render_.cullBackFaces = !render_.cullBackFaces;
+      break;
+    case ViewerAction::kOpenFile:
+      break;  // the event loop owns the prompt
+    case ViewerAction::kNextModel:
+      SwitchTo((current_ + 1) % paths_.size());
+      break;
     case ViewerAction::kPreviousModel:
       SwitchTo((current_ + paths_.size() - 1) % paths_.size());
       break;
-    case ViewerAction::kToggleHelp: help_ = !help_; break;
-    case ViewerAction::kAspectDown: cellAspect_ = std::max(0.5, cellAspect_ - kAspectStep); break;
-    case ViewerAction::kAspectUp: cellAspect_ = std::min(4.0, cellAspect_ + kAspectStep); break;
-    case ViewerAction::kQuit: quit_ = true; break;
+    case ViewerAction::kToggleHelp:
+      help_ = !help_;
+      break;
+    case ViewerAction::kAspectDown:
+      cellAspect_ = std::max(0.5, cellAspect_ - kAspectStep);
+      break;
+    case ViewerAction::kAspectUp:
+      cellAspect_ = std::min(4.0, cellAspect_ + kAspectStep);
+      break;
+    case ViewerAction::kQuit:
+      quit_ = true;
+      break;
   }
 }
 
@@ -134,7 +170,9 @@ void ViewerState::Drag(int deltaCols, int deltaRows) {
   Orbit(-kOrbitStepRadians * deltaCols, -0.5 * kOrbitStepRadians * deltaRows * cellAspect_);
 }
 
-void ViewerState::TurntableStep() { view_.theta += kTurntableStepRadians; }
+void ViewerState::TurntableStep() {
+  view_.theta += kTurntableStepRadians;
+}
 
 Camera ViewerState::CameraFor(int widthCells, int heightCells) const {
   return FitCameraAt(scene_, view_, fitRho_, widthCells, heightCells, cellAspect_);

@@ -7,8 +7,8 @@
 #include "geometry/Scene.h"
 #include "io/LoadError.h"
 #include "raster/RenderOptions.h"
-#include "tui/ViewerAction.h"
 #include "tui/Viewer.h"
+#include "tui/ViewerAction.h"
 
 namespace termshade {
 
