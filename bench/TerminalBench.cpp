@@ -76,7 +76,9 @@ class PtySession {
   long ReadFor(double seconds, std::vector<double>* arrivals) {
     long total = 0;
     const double end = RealtimeSeconds() + seconds;
-    for (double now = RealtimeSeconds(); now < end; now = RealtimeSeconds()) {
+    while (true) {
+      const double now = RealtimeSeconds();
+      if (now >= end) break;
       pollfd fd{master_, POLLIN, 0};
       if (poll(&fd, 1, static_cast<int>((end - now) * 1000) + 1) <= 0) continue;
       const long n = Drain();
@@ -223,6 +225,7 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
   }
   // Step 2: arrow keys, one frame each (xterm's keypad-mode right arrow).
   std::vector<long> arrowBytes;
+  arrowBytes.reserve(static_cast<size_t>(options.arrowPresses));
   const Phase arrows{RealtimeSeconds(), 0.0};
   for (int i = 0; i < options.arrowPresses; ++i) {
     session.Send("\x1bOC");

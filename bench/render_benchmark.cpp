@@ -25,13 +25,13 @@ void RenderTurntable(benchmark::State& state, const Scene& scene, Method method)
   state.counters["triangles"] = static_cast<double>(scene.triangles.size());
 }
 
-void BM_SphereCone(benchmark::State& state) {
+void BM_SphereCone(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
   static const Scene scene = PrepareScene(*GenerateScene("sphere_cone"));
   RenderTurntable(state, scene, static_cast<Method>(state.range(0)));
 }
 BENCHMARK(BM_SphereCone)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 
-void BM_Sphere200k(benchmark::State& state) {
+void BM_Sphere200k(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
   static const Scene scene = PrepareScene(GenerateSphere(317, 317));
   RenderTurntable(state, scene, Method::kZBuffer);
 }
@@ -39,7 +39,7 @@ BENCHMARK(BM_Sphere200k)->Unit(benchmark::kMicrosecond);
 
 // The baseline of issue 4: a plain loop that only transforms every vertex,
 // then bounds and tests every triangle against the view, drawing nothing.
-void BM_PlainLoop200k(benchmark::State& state) {
+void BM_PlainLoop200k(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
   static const Scene scene = PrepareScene(GenerateSphere(317, 317));
   ViewParams view = DefaultView(scene.diagonalModelUnits);
   std::vector<float> projected(scene.verticesWorld.size() * 2);

@@ -78,13 +78,34 @@ TEST(ViewerState, LightModeMovesTheSunNotTheEye) {
 
 TEST(ViewerState, ModesCycle) {
   ViewerState state = DemoState();
-  const Method expected[] = {Method::kPainter, Method::kCull, Method::kWire, Method::kZBuffer};
+  const Method expected[] = {Method::kPainter, Method::kCull, Method::kWire, Method::kAuto,
+                             Method::kZBuffer};
   for (Method method : expected) {
     state.Apply(ViewerAction::kCycleMethod);
     EXPECT_EQ(state.Render().method, method);
   }
   state.Apply(ViewerAction::kCycleShade);
   EXPECT_EQ(state.Render().shade, ShadeMode::kLambert);
+}
+
+TEST(ViewerState, CyclingFromAutoWrapsAround) {
+  ViewerOptions options;
+  options.render.method = Method::kAuto;
+  ViewerState state(options, 0.0);
+  ASSERT_FALSE(state.LoadFirst().has_value());
+  state.Apply(ViewerAction::kCycleMethod);
+  EXPECT_EQ(state.Render().method, Method::kZBuffer);
+}
+
+TEST(ViewerState, RefitUsesTheCurrentDistance) {
+  ViewerState state = DemoState();
+  const double before = state.CameraFor(80, 24).projection.d;
+  state.Apply(ViewerAction::kFarther);
+  EXPECT_EQ(state.CameraFor(80, 24).projection.d, before);  // farther looks smaller
+  state.Apply(ViewerAction::kRefit);
+  EXPECT_GT(state.CameraFor(80, 24).projection.d, before);  // refit fills the window again
+  state.Apply(ViewerAction::kAspectUp);
+  EXPECT_DOUBLE_EQ(state.CellAspect(), 2.05);
 }
 
 TEST(ViewerState, BadOpenKeepsTheModelAndSaysWhy) {

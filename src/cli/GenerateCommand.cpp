@@ -26,7 +26,11 @@ int RunGenerateCommand(const std::string& name, const std::string& outputPath) {
       return 2;
     }
     for (const std::string& scene : GeneratedSceneNames()) {
-      if (!WriteFile(outputPath + "/" + scene + ".dat", WriteDat(*GenerateScene(scene)))) return 1;
+      std::string path = outputPath;
+      path += '/';
+      path += scene;
+      path += ".dat";
+      if (!WriteFile(path, WriteDat(*GenerateScene(scene)))) return 1;
     }
     return 0;
   }

@@ -10,8 +10,12 @@ namespace termshade {
 struct Mat4 {
   std::array<double, 16> m{};
 
-  double& At(int row, int col) { return m[static_cast<size_t>(row * 4 + col)]; }
-  double At(int row, int col) const { return m[static_cast<size_t>(row * 4 + col)]; }
+  double& At(int row, int col) {
+    return m[static_cast<size_t>(row) * 4 + static_cast<size_t>(col)];
+  }
+  double At(int row, int col) const {
+    return m[static_cast<size_t>(row) * 4 + static_cast<size_t>(col)];
+  }
 
   static Mat4 Identity();
   static Mat4 Translation(Vec3 offset);

@@ -20,7 +20,7 @@ Vec3 TransformInFloat(const Mat4& eyeFromWorld, Vec3 pWorld) {
   const auto& m = eyeFromWorld.m;
   const auto x = static_cast<float>(pWorld.x), y = static_cast<float>(pWorld.y),
              z = static_cast<float>(pWorld.z);
-  auto row = [&](int r) {
+  auto row = [&](size_t r) {
     return static_cast<float>(m[r * 4]) * x + static_cast<float>(m[r * 4 + 1]) * y +
            static_cast<float>(m[r * 4 + 2]) * z + static_cast<float>(m[r * 4 + 3]);
   };

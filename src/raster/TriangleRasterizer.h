@@ -19,14 +19,16 @@ struct RasterVertex {
 /// widthCells x heightCells view: the cheap early-out for sub-cell triangles.
 inline bool MayCoverSample(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                            int widthCells, int heightCells) {
-  // Samples sit at 256 k + 128: the box must contain one in x and in y.
-  const int32_t minX = std::min({a.x, b.x, c.x}), maxX = std::max({a.x, b.x, c.x});
-  const int32_t minY = std::min({a.y, b.y, c.y}), maxY = std::max({a.y, b.y, c.y});
-  const int32_t firstCol = std::max(0, (minX + 127) >> 8),
-                lastCol = std::min(widthCells - 1, (maxX - 128) >> 8);
-  const int32_t firstRow = std::max(0, (minY + 127) >> 8),
-                lastRow = std::min(heightCells - 1, (maxY - 128) >> 8);
-  return firstCol <= lastCol && firstRow <= lastRow;
+  // Samples sit at 256 k + 128: the box must hold one in x and one in y.
+  // Plain two-way min and max: this runs for every triangle of every frame.
+  const int32_t minX = std::min(a.x, std::min(b.x, c.x)), maxX = std::max(a.x, std::max(b.x, c.x));
+  const int32_t firstCol = std::max(0, (minX + 127) >> 8);
+  const int32_t lastCol = std::min(widthCells - 1, (maxX - 128) >> 8);
+  if (firstCol > lastCol) return false;
+  const int32_t minY = std::min(a.y, std::min(b.y, c.y)), maxY = std::max(a.y, std::max(b.y, c.y));
+  const int32_t firstRow = std::max(0, (minY + 127) >> 8);
+  const int32_t lastRow = std::min(heightCells - 1, (maxY - 128) >> 8);
+  return firstRow <= lastRow;
 }
 
 /// How depth is interpolated and stored. The product uses kFloatInverseZ; the

@@ -51,7 +51,7 @@ void ScreenPainter::PaintHelp(ScreenGrid& grid) const {
       "mouse            drag orbits, wheel: distance",
       "r                reset the view",
       "f                refit the model to the window",
-      "m                method: zbuffer painter cull wire",
+      "m                method: zbuffer painter cull wire auto",
       "s                shading: contrast / lambert",
       "b                back faces: culled / drawn",
       "c                colour on / off",

@@ -25,7 +25,10 @@ std::string ComposeStatusLine(const std::vector<StatusSegment>& segments, int wi
     const std::string left = Join(segments, kept, false), right = Join(segments, kept, true);
     const size_t gap = left.empty() || right.empty() ? 0 : 1;
     if (left.size() + gap + right.size() <= width) {
-      return left + std::string(width - left.size() - right.size(), ' ') + right;
+      std::string line = left;
+      line.append(width - left.size() - right.size(), ' ');
+      line += right;
+      return line;
     }
     // Drop the least important segment still shown, unless it is the last one.
     int worst = -1;

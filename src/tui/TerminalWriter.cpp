@@ -14,7 +14,8 @@ namespace {
 // A terminfo string capability, or "" when the terminal lacks it.
 const char* Capability(const char* name) {
   char* value = tigetstr(name);
-  return value == nullptr || value == reinterpret_cast<char*>(-1) ? "" : value;
+  // tigetstr's documented "not a string capability" value is (char*)-1.
+  return value == nullptr || value == reinterpret_cast<char*>(-1) ? "" : value;  // NOLINT
 }
 
 void AppendParameterized(std::string& out, const char* name, int a) {

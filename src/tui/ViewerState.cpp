@@ -122,9 +122,10 @@ void ViewerState::Apply(ViewerAction action) {
       break;
     case ViewerAction::kCycleMethod: {
       static constexpr Method kOrder[] = {Method::kZBuffer, Method::kPainter, Method::kCull,
-                                          Method::kWire};
+                                          Method::kWire, Method::kAuto};
       const auto at = std::find(std::begin(kOrder), std::end(kOrder), render_.method);
-      render_.method = at + 1 == std::end(kOrder) ? kOrder[0] : *(at + 1);
+      const bool last = at == std::end(kOrder) || at + 1 == std::end(kOrder);
+      render_.method = last ? kOrder[0] : *(at + 1);
       break;
     }
     case ViewerAction::kCycleShade:
