@@ -7,33 +7,13 @@
 #include "geometry/ViewingTransform.h"
 #include "raster/FixedPoint.h"
 #include "raster/LineRasterizer.h"
+#include "raster/VertexStage.h"
 
 namespace termshade {
 namespace {
 
 RasterVertex ToRaster(const CellPoint& p) {
   return {SnapToFixed(p.u), SnapToFixed(p.v), static_cast<float>(p.w)};
-}
-
-// The float-geometry variant: the same transform and projection in float.
-Vec3 TransformInFloat(const Mat4& eyeFromWorld, Vec3 pWorld) {
-  const auto& m = eyeFromWorld.m;
-  const auto x = static_cast<float>(pWorld.x), y = static_cast<float>(pWorld.y),
-             z = static_cast<float>(pWorld.z);
-  auto row = [&](size_t r) {
-    return static_cast<float>(m[r * 4]) * x + static_cast<float>(m[r * 4 + 1]) * y +
-           static_cast<float>(m[r * 4 + 2]) * z + static_cast<float>(m[r * 4 + 3]);
-  };
-  return {row(0), row(1), row(2)};
-}
-
-RasterVertex ProjectInFloat(const Projection& proj, Vec3 pEye) {
-  const float w = -1.0F / static_cast<float>(pEye.z);
-  const float u =
-      static_cast<float>(proj.cx) + static_cast<float>(proj.d) * static_cast<float>(pEye.x) * w;
-  const float v = static_cast<float>(proj.cy) -
-                  static_cast<float>(proj.d / proj.cellAspect) * static_cast<float>(pEye.y) * w;
-  return {SnapToFixed(u), SnapToFixed(v), w};
 }
 
 // The near plane sits a tiny, scale-relative distance in front of the eye.
@@ -128,47 +108,6 @@ RenderStats Renderer::RenderSupersampled(const Scene& scene, const Camera& camer
   return stats;
 }
 
-template <bool kFloatGeometry>
-float Renderer::ProjectVertices(const Scene& scene, const Projection& proj, bool needEyeZ) {
-  const size_t count = scene.verticesWorld.size();
-  const double vScale = proj.d / proj.cellAspect;
-  // A vertex this far inside every clip plane is inside for certain, whatever
-  // the rounding; only the others need the exact out-codes.
-  const double nearZ = 2.0 * -clipPlanes_[0].offset;
-  const double xLimit = 0.5 * (kClipRangeCells - proj.cx),
-               yLimit = 0.5 * (kClipRangeCells - proj.cy);
-  // Locals, not members: the stores below (zEye_ is double) could otherwise
-  // alias the matrix and force it to be reloaded for every vertex.
-  const Mat4 m = eyeFromWorld_;
-  const double d = proj.d, cx = proj.cx, cy = proj.cy;
-  const Vec3* const verticesWorld = scene.verticesWorld.data();
-  RasterVertex* const raster = rasterVertices_.data();
-  uint8_t* const codes = outCodes_.data();
-  double* const eyeZ = needEyeZ ? zEye_.data() : nullptr;
-  float maxW = 0.0F;
-  for (size_t i = 0; i < count; ++i) {
-    const Vec3 pWorld = verticesWorld[i];
-    const Vec3 pEye = kFloatGeometry ? TransformInFloat(m, pWorld) : TransformPoint(m, pWorld);
-    if (eyeZ != nullptr) eyeZ[i] = pEye.z;
-    // ProjectToCell, inlined: u = cx + d x w, v = cy - d y w / a with w = -1/z.
-    const double w = -1.0 / pEye.z;
-    const double xCells = d * pEye.x * w, yCells = vScale * pEye.y * w;
-    if (pEye.z <= -nearZ && std::fabs(xCells) <= xLimit && std::fabs(yCells) <= yLimit) {
-      codes[i] = 0;
-      raster[i] = kFloatGeometry ? ProjectInFloat(proj, pEye)
-                                 : RasterVertex{SnapToFixed(cx + xCells), SnapToFixed(cy - yCells),
-                                                static_cast<float>(w)};
-      maxW = std::max(maxW, raster[i].w);
-      continue;
-    }
-    const unsigned code = OutCode(clipPlanes_, pEye);
-    codes[i] = static_cast<uint8_t>(code);
-    raster[i] = code == 0 ? ToRaster(ProjectToCell(proj, pEye)) : RasterVertex{};
-    maxW = std::max(maxW, raster[i].w);
-  }
-  return maxW;
-}
-
 void Renderer::TransformVertices(const Scene& scene, const Camera& camera,
                                  const RenderVariant& variant, bool needEyeZ) {
   eyeFromWorld_ = EyeFromWorld(camera.view);
@@ -177,8 +116,9 @@ void Renderer::TransformVertices(const Scene& scene, const Camera& camera,
   zEye_.resize(needEyeZ ? count : 0);
   rasterVertices_.resize(count);
   outCodes_.resize(count);
-  maxW_ = variant.floatGeometry ? ProjectVertices<true>(scene, proj, needEyeZ)
-                                : ProjectVertices<false>(scene, proj, needEyeZ);
+  maxW_ = ProjectVertices(
+      scene.verticesWorld, eyeFromWorld_, proj, clipPlanes_, variant.floatGeometry,
+      {rasterVertices_.data(), outCodes_.data(), needEyeZ ? zEye_.data() : nullptr});
   depthEncoding_ = {variant.depthFormat, maxW_ > 0.0F ? 65535.0F / maxW_ : 1.0F};
   scanline_ = variant.scanline;
 }

@@ -38,8 +38,6 @@ class Renderer {
                                  CellBuffer& cells);
   void TransformVertices(const Scene& scene, const Camera& camera, const RenderVariant& variant,
                          bool needEyeZ);
-  template <bool kFloatGeometry>
-  float ProjectVertices(const Scene& scene, const Projection& proj, bool needEyeZ);
   bool FaceIsFront(const Scene& scene, uint32_t face) const;
   void Rasterize(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                  uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells) const;
