@@ -174,6 +174,13 @@ for mono in "NO_COLOR=1 $bin" "$bin --mono"; do
   wait_for '^\$ ?$' 5 >/dev/null
 done
 
+# 12. The same first screen in a UTF-8 locale as in the C locale.
+run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8"
+frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
 run "clear; TERM=dumb $bin; echo exit=\$?"
 wait_for 'termshade render' 5 >/dev/null && pass || fail "dumb terminal message"
 wait_for 'exit=2' 5 >/dev/null && pass || fail "dumb terminal exit code"
