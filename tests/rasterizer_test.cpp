@@ -34,6 +34,19 @@ std::vector<int> CoverageCounts(const std::vector<Triangle>& triangles, int widt
   return counts;
 }
 
+// Which triangle (1-based, in order) covers each sample.
+CellBuffer TriangleMap(const std::vector<Triangle>& triangles) {
+  CellBuffer cells(kWidth, kHeight);
+  DepthBuffer depth;
+  depth.Resize(kWidth, kHeight);
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const Triangle& t = triangles[i];
+    RasterizeTriangle(t[0], t[1], t[2], static_cast<uint32_t>(i + 1), DepthRule::kOverwrite, depth,
+                      cells);
+  }
+  return cells;
+}
+
 struct GridOptions {
   double stepCells = 3.0;
   double jitterCells = 0.0;
@@ -168,16 +181,7 @@ TEST(Rasterizer, PerspectiveDepthDoesNotChangeCoverage) {
   for (Triangle& t : deep) {
     for (RasterVertex& v : t) v.w = 1.0F / depth(random);
   }
-  CellBuffer a(kWidth, kHeight), b(kWidth, kHeight);
-  DepthBuffer depthA, depthB;
-  depthA.Resize(kWidth, kHeight);
-  depthB.Resize(kWidth, kHeight);
-  for (size_t i = 0; i < flat.size(); ++i) {
-    const auto face = static_cast<uint32_t>(i + 1);
-    RasterizeTriangle(flat[i][0], flat[i][1], flat[i][2], face, DepthRule::kOverwrite, depthA, a);
-    RasterizeTriangle(deep[i][0], deep[i][1], deep[i][2], face, DepthRule::kOverwrite, depthB, b);
-  }
-  EXPECT_EQ(a.FaceNumbers(), b.FaceNumbers());
+  EXPECT_EQ(TriangleMap(flat).FaceNumbers(), TriangleMap(deep).FaceNumbers());
   ExpectEveryCellOnce(CoverageCounts(deep));
 }
 
@@ -188,16 +192,7 @@ TEST(Rasterizer, CoverageMovesWithWholeCellTranslation) {
   options.shiftCells = 3.0;
   const std::vector<Triangle> shifted = TilingMesh(options);
   ASSERT_EQ(base.size(), shifted.size());
-  CellBuffer a(kWidth, kHeight), b(kWidth, kHeight);
-  DepthBuffer depthA, depthB;
-  depthA.Resize(kWidth, kHeight);
-  depthB.Resize(kWidth, kHeight);
-  for (size_t i = 0; i < base.size(); ++i) {
-    const auto face = static_cast<uint32_t>(i + 1);
-    RasterizeTriangle(base[i][0], base[i][1], base[i][2], face, DepthRule::kOverwrite, depthA, a);
-    RasterizeTriangle(shifted[i][0], shifted[i][1], shifted[i][2], face, DepthRule::kOverwrite,
-                      depthB, b);
-  }
+  const CellBuffer a = TriangleMap(base), b = TriangleMap(shifted);
   for (int row = 0; row + 3 < kHeight; ++row) {
     for (int col = 0; col + 3 < kWidth; ++col) {
       EXPECT_EQ(a.FaceNumber(col, row), b.FaceNumber(col + 3, row + 3)) << col << "," << row;
