@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/RayCast.h"
+#include "geometry/ViewingTransform.h"
 #include "io/FrameFormats.h"
 #include "raster/FrameError.h"
 #include "support/TestSupport.h"
@@ -29,6 +30,19 @@ DumpComparison CompareJsonDump(const Scene& scene, Method method, double theta, 
   const nlohmann::json dump = nlohmann::json::parse(text);
   EXPECT_EQ(dump["format"], "termshade-frame/1");
   EXPECT_EQ(dump["method"], std::string(MethodName(method)));
+
+  // eyeFromFile takes file coordinates where the pipeline takes them.
+  const auto& m = dump["camera"]["eyeFromFile"];
+  const Mat4 eyeFromWorld = EyeFromWorld(frame.camera.view);
+  for (size_t v = 0; v < scene.mesh.verticesFile.size(); ++v) {
+    const Vec3 p = scene.mesh.verticesFile[v];
+    const Vec3 expected = TransformPoint(eyeFromWorld, scene.verticesWorld[v]);
+    for (int row = 0; row < 3; ++row) {
+      const double actual = double(m[4 * row]) * p.x + double(m[4 * row + 1]) * p.y +
+                            double(m[4 * row + 2]) * p.z + double(m[4 * row + 3]);
+      EXPECT_NEAR(actual, row == 0 ? expected.x : (row == 1 ? expected.y : expected.z), 1e-12);
+    }
+  }
 
   // Rebuild the camera from the dump alone, as an outside tool would.
   Camera camera = frame.camera;
