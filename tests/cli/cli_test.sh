@@ -50,6 +50,11 @@ check json 0 "" -- "$bin" render "$src/data/beams.dat" --format json --size 30x1
 expect json_has_schema grep -q '"format": "termshade-frame/1"' "$work/out"
 check ansi 0 "" -- "$bin" render "$src/data/cube.dat" --format ansi --size 30x10
 expect ansi_has_sgr grep -q $'\x1b\\[38;5;' "$work/out"
+"$bin" render "$src/data/sphere_cone.dat" --size 50x16 --format ansi | sed 's/\x1b\[[0-9;]*m//g' >"$work/stripped"
+"$bin" render "$src/data/sphere_cone.dat" --size 50x16 >"$work/plain"
+expect ansi_is_text_plus_colour cmp -s "$work/stripped" "$work/plain"
+check auto_method 0 "" -- "$bin" render "$src/data/cube.dat" --method auto --format json --size 20x8
+expect auto_reports_itself grep -q '"method": "auto"' "$work/out"
 check generate 0 "" -- "$bin" generate wedge
 expect generate_matches_data cmp -s "$work/out" "$src/data/wedge.dat"
 check obj_import 0 "" -- "$bin" render "$src/tests/models/good/quad_and_triangle.obj" --size 20x8

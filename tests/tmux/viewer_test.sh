@@ -174,7 +174,19 @@ for mono in "NO_COLOR=1 $bin" "$bin --mono"; do
   wait_for '^\$ ?$' 5 >/dev/null
 done
 
-# 12. The same first screen in a UTF-8 locale as in the C locale.
+# 12. Several models on the command line: n and p step through them.
+run "clear; $bin $src/data/cube.dat $src/data/beams.dat"
+wait_for 'cube.dat \[1/2\]' 5 >/dev/null && pass || fail "first of two models"
+frame_matches_render first_of_two_models 24 "$src/data/cube.dat" --size 80x24
+tm send-keys -t v n
+wait_for 'beams.dat \[2/2\]' 5 >/dev/null && pass || fail "n did not step to the second model"
+frame_matches_render second_of_two_models 24 "$src/data/beams.dat" --size 80x24
+tm send-keys -t v n
+wait_for 'cube.dat \[1/2\]' 5 >/dev/null && pass || fail "n did not wrap around"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
+# 13. The same first screen in a UTF-8 locale as in the C locale.
 run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8"
 frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24
