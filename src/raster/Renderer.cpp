@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/FixedRange.h"
 #include "geometry/ViewingTransform.h"
 #include "raster/FixedPoint.h"
 #include "raster/LineRasterizer.h"
