@@ -144,6 +144,27 @@ TEST(Triangulate, DegenerateInputNeverLoopsOrCrashes) {
   EXPECT_EQ(triangles.size(), 2U);
 }
 
+TEST(Triangulate, LargeCombStaysCorrectAndHostileOnesStayBounded) {
+  // A comb: every other corner reflex. 400 corners are triangulated properly.
+  auto comb = [](int teeth) {
+    std::vector<Vec3> polygon{{0, 0, 0}, {2.0 * teeth, 0, 0}};
+    for (int t = teeth - 1; t >= 0; --t) {
+      polygon.push_back({2.0 * t + 2, 5, 0});
+      polygon.push_back({2.0 * t + 1, 5, 0});
+      polygon.push_back({2.0 * t + 1, 1, 0});
+      polygon.push_back({2.0 * t, 1, 0});
+    }
+    polygon.back() = {0, 5, 0};
+    return polygon;
+  };
+  ExpectValidTriangulation(comb(100));
+  // 40,000 corners: the budget ends the search; still n - 2 triangles, quickly.
+  const std::vector<Vec3> hostile = comb(10000);
+  std::vector<CornerTriangle> triangles;
+  TriangulatePolygon(hostile, triangles);
+  EXPECT_EQ(triangles.size(), hostile.size() - 2);
+}
+
 TEST(FaceNormal, NewellIsRightWithCollinearLeadingCorners) {
   const Vec3 n = Normalized(
       NewellNormal(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}));

@@ -55,6 +55,10 @@ std::vector<uint32_t> DropConsecutiveDuplicates(std::span<const Vec3> corners) {
   return kept;
 }
 
+// Point-in-triangle tests one polygon may spend: far above any sensible
+// face (a 2,000-corner outline needs about 4e6), far below a hang.
+constexpr int64_t kPointTestBudget = 50'000'000;
+
 class EarClipper {
  public:
   explicit EarClipper(std::vector<Point2> points) : points_(std::move(points)) {
@@ -88,6 +92,7 @@ class EarClipper {
   bool IsEmpty(uint32_t i) const {
     const uint32_t p = prev_[i], n = next_[i];
     const Point2 x = points_[p], y = points_[i], z = points_[n];
+    budget_ -= static_cast<int64_t>(remaining_);
     for (uint32_t j = next_[n]; j != p; j = next_[j]) {
       const Point2 q = points_[j];
       if (SamePoint(q, x) || SamePoint(q, y) || SamePoint(q, z)) continue;
@@ -97,8 +102,11 @@ class EarClipper {
   }
 
   // Step 1: a strictly convex empty ear; step 2: a collinear empty corner;
-  // step 3 (not a simple polygon): the most convex corner.
+  // step 3 (not a simple polygon): the most convex corner. Past the work
+  // budget (hostile input: thousands of reflex corners would make this
+  // cubic), corners are clipped in order, so the time stays bounded.
   uint32_t FindEar(uint32_t start) const {
+    if (budget_ <= 0) return start;
     uint32_t i = start;
     for (size_t k = 0; k < remaining_; ++k, i = next_[i]) {
       if (Convexity(i) > 0.0 && IsEmpty(i)) return i;
@@ -129,6 +137,7 @@ class EarClipper {
   std::vector<uint32_t> next_;
   std::vector<uint32_t> prev_;
   size_t remaining_ = 0;
+  mutable int64_t budget_ = kPointTestBudget;
 };
 
 }  // namespace
