@@ -75,6 +75,10 @@ struct BadFile {
   const char* message;  // after "<path>:"
 };
 
+void PrintTo(const BadFile& badFile, std::ostream* out) {
+  *out << badFile.name;
+}
+
 class DatReaderErrors : public testing::TestWithParam<BadFile> {};
 
 TEST_P(DatReaderErrors, NamesLineColumnAndWhatWasExpected) {

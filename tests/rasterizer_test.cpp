@@ -150,6 +150,10 @@ struct TilingCase {
   GridOptions options;
 };
 
+void PrintTo(const TilingCase& tilingCase, std::ostream* out) {
+  *out << tilingCase.name;
+}
+
 class WatertightTiling : public testing::TestWithParam<TilingCase> {};
 
 TEST_P(WatertightTiling, EveryCellIsCoveredExactlyOnce) {

@@ -127,6 +127,33 @@ TEST(StatusLine, DropsTheLeastImportantSegmentsFirst) {
   EXPECT_EQ(ComposeStatusLine(segments, 6), "model.");
 }
 
+TEST(StatusLine, ALongPathLosesItsFrontBeforeOtherSegmentsGo) {
+  const std::string path = "/a/very/long/checkout/directory/of/the/project/data/cube.dat [1/2]";
+  const std::vector<StatusSegment> segments{
+      {path, 0, false, Elision::kFront, 20}, {"zbuffer", 2, false}, {"theta 0.30", 1, true}};
+  EXPECT_EQ(ComposeStatusLine(segments, 45), "...t/data/cube.dat [1/2] | zbuffer theta 0.30");
+  EXPECT_EQ(ComposeStatusLine(segments, 31), "...ta/cube.dat [1/2] theta 0.30");
+  EXPECT_EQ(ComposeStatusLine(segments, 12), "...dat [1/2]");
+  EXPECT_EQ(ComposeStatusLine({{path, 0, false, Elision::kFront, 20}}, 200).substr(0, path.size()),
+            path);
+}
+
+TEST(StatusLine, ElisionKeepsWhatItPromises) {
+  EXPECT_EQ(Elide("abcdef", 6, Elision::kFront), "abcdef");
+  EXPECT_EQ(Elide("abcdefgh", 6, Elision::kFront), "...fgh");
+  EXPECT_EQ(Elide("abcdefgh", 6, Elision::kCutEnd), "abcdef");
+  EXPECT_EQ(Elide("abcdefghijklmnop", 11, Elision::kMiddle), "ab...klmnop");
+  EXPECT_EQ(Elide("abcdefgh", 2, Elision::kMiddle), "gh");
+  EXPECT_EQ(Elide("abcdefgh", 0, Elision::kFront), "");
+}
+
+TEST(StatusLine, AMessageKeepsItsFirstWordAndItsEnd) {
+  const std::string message = "opened /a/very/long/checkout/directory/of/the/project/data/cube.dat";
+  const std::vector<StatusSegment> segments{{message, 0, false, Elision::kMiddle},
+                                            {"theta 0.30", 1, true}};
+  EXPECT_EQ(ComposeStatusLine(segments, 40), "opened /a...of/the/project/data/cube.dat");
+}
+
 TEST(LineEditor, EditsAndRefusesControlCharacters) {
   LineEditor editor;
   for (char c : std::string("cub.dat")) editor.Insert(c);

@@ -217,6 +217,7 @@ class EventLoop {
   // The status line, most important first: the message or model, the view,
   // the help hint, the method, what was drawn, the frame time.
   std::string StatusText(const RenderStats& stats, double frameMs, int cols) const {
+    constexpr int kLeadMinCells = 32;  // a long path keeps its tail: file name and [i/n]
     const ViewParams& view = state_.View();
     const RenderOptions& render = state_.Render();
     char viewText[96], drawnText[96], timeText[32];
@@ -225,13 +226,18 @@ class EventLoop {
     std::snprintf(drawnText, sizeof drawnText, "%d/%zu faces %d tris", stats.facesVisible,
                   state_.CurrentScene().FaceCount(), stats.trianglesDrawn);
     std::snprintf(timeText, sizeof timeText, "%.2f ms", frameMs);
-    std::string lead = state_.Message();
-    if (lead.empty())
-      lead = state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends" : state_.ModelLabel();
+    // A message is shown whole if it can be; the model's path gives way to the view.
+    StatusSegment lead{SanitizeForTerminal(state_.Message(), 4096), 0, false, Elision::kMiddle};
+    if (lead.text.empty()) {
+      lead.text =
+          state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends" : state_.ModelLabel();
+      lead.elision = Elision::kFront;
+      lead.minWidthCells = kLeadMinCells;
+    }
     const std::string method = std::string(MethodName(render.method)) + " " +
                                std::string(ShadeModeName(render.shade)) +
                                (render.cullBackFaces ? "" : " 2-sided");
-    return ComposeStatusLine({{SanitizeForTerminal(lead, 512), 0, false},
+    return ComposeStatusLine({lead,
                               {method, 3, false},
                               {drawnText, 4, false},
                               {viewText, 1, true},

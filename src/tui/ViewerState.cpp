@@ -181,11 +181,11 @@ Camera ViewerState::CameraFor(int widthCells, int heightCells) const {
 
 std::string ViewerState::ModelLabel() const {
   const std::string& path = paths_[current_];
-  std::string label = path.empty() ? std::string(kDemoSceneName) : path;
+  std::string label = path.empty() ? std::string(kDemoSceneName) : SanitizeForTerminal(path, 4096);
   if (paths_.size() > 1) {
     label += " [" + std::to_string(current_ + 1) + "/" + std::to_string(paths_.size()) + "]";
   }
-  return SanitizeForTerminal(label, 60);
+  return label;
 }
 
 }  // namespace termshade

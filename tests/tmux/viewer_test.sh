@@ -25,11 +25,13 @@ start_shell() {  # start_shell COLS ROWS
 }
 
 screen() { tm capture-pane -t v -p; }
+# The screen with wrapped lines joined: a long path in a message may wrap.
+joined_screen() { tm capture-pane -t v -p -J; }
 
 wait_for() {  # wait_for REGEX SECONDS: until the screen matches
   local deadline=$((SECONDS + $2))
   while [ $SECONDS -le "$deadline" ]; do
-    if screen | grep -qE -- "$1"; then return 0; fi
+    if joined_screen | grep -qE -- "$1"; then return 0; fi
     sleep 0.1
   done
   screen
