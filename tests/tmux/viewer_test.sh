@@ -64,6 +64,14 @@ frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line =
 
 run() { tm send-keys -t v -l -- "$1"; tm send-keys -t v Enter; }
 
+# Types an X10 mouse report (ESC [ M, then button, column, row, each + 32),
+# the bytes a terminal sends when ncurses has asked for mouse reports.
+mouse() {  # mouse BUTTON-CODE COL ROW (0-based cells)
+  local report
+  report=$(printf '\033[M\%03o\%03o\%03o' $(($1 + 32)) $(($2 + 33)) $(($3 + 33)))
+  tm send-keys -t v -l "$(printf "$report")"
+}
+
 # 1. The first screen is the headless render of the same view and size.
 start_shell 80 25
 run "$bin"
@@ -89,6 +97,20 @@ doubled_rho=$(python3 -c "print(repr(2 * $default_rho))")
 frame_matches_render distance_key_matches_render 24 "$src/data/sphere_cone.dat" --size 80x24 --theta 0.4 --phi 1.0 --rho "$doubled_rho"
 tm send-keys -t v r
 wait_for 'theta 0\.30 phi 1\.30 rho 9\.85' 5 >/dev/null && pass || fail "r did not reset"
+
+# 3b. Mouse: a drag turns the model with the pointer (0.1 rad a column, 0.1
+# rad a cell height, rows being 2 columns tall), the wheel changes the distance.
+mouse 0 40 12   # button 1 pressed
+mouse 32 45 12  # moved with button 1 held
+mouse 3 50 14   # released
+wait_for 'theta -0\.70 phi 1\.10' 5 >/dev/null || fail "mouse drag did not orbit"
+frame_matches_render mouse_drag_matches_render 24 "$src/data/sphere_cone.dat" --size 80x24 --theta -0.7 --phi 1.1 --method auto
+mouse 65 40 12  # wheel down: farther
+wait_for 'rho 19\.7' 5 >/dev/null && pass || fail "wheel down did not double rho"
+mouse 64 40 12  # wheel up: closer
+wait_for 'rho 9\.85' 5 >/dev/null && pass || fail "wheel up did not halve rho"
+tm send-keys -t v r
+wait_for 'theta 0\.30 phi 1\.30 rho 9\.85' 5 >/dev/null || fail "r did not reset after the mouse"
 
 # 4. Resizing re-renders at the new size.
 tm resize-window -t v -x 100 -y 31
@@ -192,6 +214,14 @@ wait_for '^\$ ?$' 5 >/dev/null
 run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8"
 frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
+# 14. A terminal that reports its pixel size sets the cell aspect: 10x18-pixel
+# cells (aspect 1.8) give the frame 'render --cell-aspect 1.8' gives.
+run "clear; python3 -c 'import fcntl, struct, termios; fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack(\"HHHH\", 25, 80, 800, 450))'; $bin"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start with a pixel size"
+frame_matches_render pixel_size_sets_cell_aspect 24 "$src/data/sphere_cone.dat" --size 80x24 --cell-aspect 1.8
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 
