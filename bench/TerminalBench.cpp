@@ -232,6 +232,13 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
     arrowBytes.push_back(session.ReadUntilQuiet(100));
   }
   const Phase arrowsDone{arrows.start, RealtimeSeconds()};
+  // Step 2b: a held key: many presses queued before the viewer reads any.
+  std::string heldKey;
+  for (int i = 0; i < options.heldKeyPresses; ++i) heldKey += "\x1bOC";
+  const Phase held{RealtimeSeconds(), 0.0};
+  session.Send(heldKey);
+  const long heldBytes = session.ReadUntilQuiet(300);
+  const Phase heldDone{held.start, RealtimeSeconds()};
   // Step 3: the turntable.
   session.Send(" ");
   std::vector<double> arrivals;
@@ -258,6 +265,7 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
   std::printf("%-38s %12s\n", "measure", "value");
   std::printf("%-38s %12ld\n", "first frame, bytes", firstFrameBytes);
   std::printf("%-38s %12.0f\n", "per arrow key (median), bytes", Median(arrowBytes));
+  std::printf("%-38s %12ld\n", "held key, all presses, bytes", heldBytes);
   std::printf("%-38s %12.0f\n", "per turntable frame (mean), bytes",
               static_cast<double>(turntableBytes) / turntableFrames);
   std::printf("%-38s %12.1f\n", "turntable frames per second",
@@ -269,6 +277,8 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
     WritesIn(writes, arrowsDone, calls, bytes, times);
     std::printf("%-38s %12.2f\n", "write() calls per arrow-key frame",
                 static_cast<double>(calls) / std::max(1, options.arrowPresses));
+    WritesIn(writes, heldDone, calls, bytes, times);
+    std::printf("%-38s %12ld\n", "held key, frames drawn (write calls)", calls);
     WritesIn(writes, turntableDone, calls, bytes, times);
     const int frames = std::max(1, CountBursts(times, 0.015));
     std::printf("%-38s %12.2f\n", "write() calls per turntable frame",
@@ -278,8 +288,10 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
   }
   std::printf("%-38s %12ld\n", "idle: bytes written", idleBytes);
   std::printf("%-38s %12.3f\n", "idle: CPU seconds", idleCpu);
-  std::printf("(over %.0f s without input; turntable %.0f s; %d arrow presses)\n",
-              options.idleSeconds, options.turntableSeconds, options.arrowPresses);
+  std::printf(
+      "(over %.0f s without input; turntable %.0f s; %d arrow presses one by one, "
+      "%d queued at once)\n",
+      options.idleSeconds, options.turntableSeconds, options.arrowPresses, options.heldKeyPresses);
   std::remove(logPath.c_str());
   return 0;
 }

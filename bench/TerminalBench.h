@@ -12,6 +12,7 @@ struct TerminalBenchOptions {
   int widthCells = 160;
   int heightCells = 48;
   int arrowPresses = 20;
+  int heldKeyPresses = 60;  // queued at once, as a held key over a slow link
   double turntableSeconds = 4.0;
   double idleSeconds = 10.0;
   bool traceWrites = true;  ///< count write() calls with strace, if it is installed

@@ -25,6 +25,7 @@ check "one write per arrow-key frame" "x <= 1.05" "$(value 'write() calls per ar
 check "one write per turntable frame" "x <= 1.1" "$(value 'write() calls per turntable frame')"
 check "nothing written while idle" "x == 0" "$(value 'idle: bytes written')"
 check "no CPU while idle" "x <= 0.05" "$(value 'idle: CPU seconds')"
+check "a held key's queued presses draw few frames" "x <= 3" "$(value 'held key, frames drawn')"
 check "an arrow key redraws only what changed" "x < 6000" "$(value 'per arrow key (median), bytes')"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

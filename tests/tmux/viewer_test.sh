@@ -112,6 +112,14 @@ wait_for 'rho 9\.85' 5 >/dev/null && pass || fail "wheel up did not halve rho"
 tm send-keys -t v r
 wait_for 'theta 0\.30 phi 1\.30 rho 9\.85' 5 >/dev/null || fail "r did not reset after the mouse"
 
+# 3c. A held key: 25 presses sent at once all count, and the view stops where
+# they put it (the frames drawn for them are counted in etiquette_test.sh).
+tm send-keys -t v $(printf 'Right %.0s' $(seq 1 25))
+wait_for 'theta 2\.80 phi 1\.30' 5 >/dev/null || fail "queued arrow presses were lost"
+frame_matches_render held_key_matches_render 24 "$src/data/sphere_cone.dat" --size 80x24 --theta 2.8 --method auto
+tm send-keys -t v r
+wait_for 'theta 0\.30 phi 1\.30 rho 9\.85' 5 >/dev/null || fail "r did not reset after the held key"
+
 # 4. Resizing re-renders at the new size.
 tm resize-window -t v -x 100 -y 31
 wait_for 'theta 0\.30' 5 >/dev/null
