@@ -37,6 +37,7 @@ std::vector<MethodCase> Methods() {
     RenderOptions options;
     options.method = method;
     options.shade = ShadeMode::kLambert;  // stable across frames: shade error means something
+    options.keepDepth = false;            // as the viewer draws
     change(options.variant);
     return options;
   };
@@ -153,6 +154,42 @@ struct CaseResult {
   int compared = 0;
 };
 
+// Median frame time of every method, in milliseconds. Methods take turns, a
+// turntable of frames each, until the budget is spent, so the machine's
+// drift and noise fall on all of them alike.
+std::vector<double> MedianFrameMs(const Scene& scene, const std::vector<MethodCase>& methods,
+                                  const std::vector<Camera>& cameras,
+                                  const MethodsBenchOptions& options) {
+  struct Runner {
+    Renderer renderer;
+    CellBuffer cells;
+    DepthBuffer depth;
+    std::vector<double> times;
+  };
+  std::vector<Runner> runners(methods.size());
+  for (Runner& runner : runners) {
+    runner.cells.Resize(options.widthCells, options.heightCells);
+    runner.depth.Resize(options.widthCells, options.heightCells);
+  }
+  const auto deadline =
+      Clock::now() + std::chrono::duration<double>(options.secondsPerCase * methods.size());
+  for (int round = 0; round < 3 || (Clock::now() < deadline && round < 2000); ++round) {
+    for (size_t m = 0; m < methods.size(); ++m) {
+      Runner& runner = runners[m];
+      for (const Camera& camera : cameras) {
+        const auto start = Clock::now();
+        runner.renderer.Render(scene, camera, methods[m].options, runner.depth, runner.cells);
+        runner.times.push_back(
+            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      }
+    }
+  }
+  std::vector<double> medians;
+  for (Runner& runner : runners) medians.push_back(Median(std::move(runner.times)));
+  return medians;
+}
+
+// Face and shade error of one method on every frame.
 CaseResult Measure(const NamedScene& named, const MethodCase& method,
                    const std::vector<std::vector<double>>& referenceLevels,
                    const std::vector<Camera>& cameras, const MethodsBenchOptions& options) {
@@ -161,17 +198,7 @@ CaseResult Measure(const NamedScene& named, const MethodCase& method,
   DepthBuffer depth;
   depth.Resize(options.widthCells, options.heightCells);
   CaseResult result;
-  // Step 1: time, frames round-robin until the budget is spent.
-  std::vector<double> times;
-  const auto deadline = Clock::now() + std::chrono::duration<double>(options.secondsPerCase);
-  for (size_t i = 0; times.size() < cameras.size() * 3 || Clock::now() < deadline; ++i) {
-    const auto start = Clock::now();
-    renderer.Render(named.scene, cameras[i % cameras.size()], method.options, depth, cells);
-    times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    if (times.size() > 20000) break;
-  }
-  result.medianMs = Median(times);
-  // Step 2: error on every frame.
+  // Error on every frame.
   long wrong = 0, compared = 0;
   double squared = 0.0;
   long cellsTotal = 0;
@@ -220,13 +247,13 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
   }
   const std::vector<MethodCase> methods = Methods();
   std::ofstream csv(options.csvPath);
-  csv << "scene,method,triangles,median_ms,ns_per_cell,face_error,shade_error_levels,compared_"
-         "cells\n";
+  csv << "scene,method,triangles,median_ms,time_vs_default,ns_per_cell,face_error,"
+         "shade_error_levels,compared_cells\n";
   std::printf("termshade bench methods: %dx%d cells, %d turntable frames per scene, %s\n",
               options.widthCells, options.heightCells, options.frames,
               MachineDescription().c_str());
-  std::printf("%-16s %-30s %9s %10s %10s %11s\n", "scene", "method", "median ms", "ns/cell",
-              "face err %", "shade RMS");
+  std::printf("%-16s %-30s %9s %8s %9s %10s %9s\n", "scene", "method", "median ms", "x default",
+              "ns/cell", "face err %", "shade RMS");
   std::vector<PlotPoint> points;
   for (const NamedScene& named : scenes) {
     // The same frames for every method: a turntable, alternating elevations.
@@ -244,16 +271,22 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
       referenceLevels.push_back(ReferenceLevels(named.scene, cameras.back(), lambert,
                                                 options.widthCells, options.heightCells));
     }
-    for (const MethodCase& method : methods) {
-      const CaseResult result = Measure(named, method, referenceLevels, cameras, options);
+    const std::vector<double> medianMs = MedianFrameMs(named.scene, methods, cameras, options);
+    for (size_t m = 0; m < methods.size(); ++m) {
+      const MethodCase& method = methods[m];
+      CaseResult result = Measure(named, method, referenceLevels, cameras, options);
+      result.medianMs = medianMs[m];
       const double nsPerCell = 1e6 * result.medianMs / (options.widthCells * options.heightCells);
       char faceText[32] = "-";
       if (result.faceError >= 0)
         std::snprintf(faceText, sizeof faceText, "%.3f", 100 * result.faceError);
-      std::printf("%-16s %-30s %9.4f %10.2f %10s %11.3f\n", named.name.c_str(), method.name.c_str(),
-                  result.medianMs, nsPerCell, faceText, result.shadeErrorLevels);
+      // Ratios within one run: the machine's drift cancels out of them.
+      const double vsDefault = result.medianMs / medianMs[0];
+      std::printf("%-16s %-30s %9.4f %8.2f %9.2f %10s %9.3f\n", named.name.c_str(),
+                  method.name.c_str(), result.medianMs, vsDefault, nsPerCell, faceText,
+                  result.shadeErrorLevels);
       csv << '"' << named.name << "\",\"" << method.name << "\"," << named.scene.triangles.size()
-          << ',' << result.medianMs << ',' << nsPerCell << ','
+          << ',' << result.medianMs << ',' << vsDefault << ',' << nsPerCell << ','
           << (result.faceError >= 0 ? std::to_string(result.faceError) : "") << ','
           << result.shadeErrorLevels << ',' << result.compared << "\n";
       points.push_back(

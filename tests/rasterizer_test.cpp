@@ -139,6 +139,27 @@ TEST(Rasterizer, EmptyAndDegenerateTrianglesDrawNothing) {
   for (int count : counts) EXPECT_EQ(count, 0);
 }
 
+TEST(Rasterizer, CoverOnlyCoversTheSameSamplesAndLeavesDepthAlone) {
+  const RasterVertex a{SnapToFixed(1.2), SnapToFixed(1.7), 0.5F},
+      b{SnapToFixed(30.1), SnapToFixed(4.3), 0.25F}, c{SnapToFixed(7.9), SnapToFixed(19.6), 1};
+  CellBuffer overwritten(kWidth, kHeight), coverOnly(kWidth, kHeight);
+  DepthBuffer depth;
+  depth.Resize(kWidth, kHeight);
+  depth.Clear();
+  const int written = RasterizeTriangle(a, b, c, 3, DepthRule::kOverwrite, depth, overwritten);
+  const int touched = [&] {
+    DepthBuffer untouched;
+    untouched.Resize(kWidth, kHeight);
+    untouched.Clear();
+    const int count = RasterizeTriangle(a, b, c, 3, DepthRule::kCoverOnly, untouched, coverOnly);
+    for (int i = 0; i < kWidth * kHeight; ++i) EXPECT_EQ(untouched.At(i), 0.0F) << i;
+    return count;
+  }();
+  EXPECT_GT(written, 100);
+  EXPECT_EQ(touched, written);
+  EXPECT_EQ(coverOnly.FaceNumbers(), overwritten.FaceNumbers());
+}
+
 TEST(Rasterizer, WindingDoesNotMatter) {
   const RasterVertex a{SnapToFixed(1.2), SnapToFixed(1.7), 1},
       b{SnapToFixed(20.1), SnapToFixed(4.3), 1}, c{SnapToFixed(7.9), SnapToFixed(19.6), 1};

@@ -80,11 +80,34 @@ TEST(Scenes, AutoIsExactWhereItCullsAlone) {
   const Scene sphere = PrepareScene(GenerateSphere(40, 60));
   RenderOptions options;
   options.method = Method::kAuto;
-  for (double theta : {0.3, 1.9, 4.0}) {
-    const test::Frame frame = test::RenderFrame(sphere, theta, 0.8, 100, 40, options);
-    const FaceErrorReport report = MeasureFaceError(sphere, frame.camera, true, frame.cells);
-    EXPECT_EQ(report.wrongCells, 0);
-    EXPECT_GT(report.comparedCells, 500);
+  for (bool keepDepth : {true, false}) {  // without depth, as the viewer draws
+    options.keepDepth = keepDepth;
+    for (double theta : {0.3, 1.9, 4.0}) {
+      const test::Frame frame = test::RenderFrame(sphere, theta, 0.8, 100, 40, options);
+      const FaceErrorReport report = MeasureFaceError(sphere, frame.camera, true, frame.cells);
+      EXPECT_EQ(report.wrongCells, 0);
+      EXPECT_GT(report.comparedCells, 500);
+    }
+  }
+}
+
+// The viewer and text dumps skip depth where no method needs it; no cell may change.
+TEST(Scenes, DroppingDepthChangesNoCell) {
+  for (const char* name : {"cube", "beams", "letter_l", "surface", "steps"}) {
+    const Scene scene = test::LoadScene(std::string("data/") + name + ".dat");
+    for (Method method :
+         {Method::kZBuffer, Method::kPainter, Method::kCull, Method::kWire, Method::kAuto}) {
+      RenderOptions withDepth, withoutDepth;
+      withDepth.method = withoutDepth.method = method;
+      withoutDepth.keepDepth = false;
+      for (double theta : {0.3, 2.2}) {
+        const test::Frame kept = test::RenderFrame(scene, theta, 1.1, 90, 30, withDepth);
+        const test::Frame dropped = test::RenderFrame(scene, theta, 1.1, 90, 30, withoutDepth);
+        EXPECT_EQ(dropped.cells.FaceNumbers(), kept.cells.FaceNumbers())
+            << name << ' ' << MethodName(method);
+        EXPECT_EQ(dropped.Text(), kept.Text()) << name << ' ' << MethodName(method);
+      }
+    }
   }
 }
 

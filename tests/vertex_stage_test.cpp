@@ -19,7 +19,7 @@ TEST(VertexStage, MatchesThePlainProjectionForEveryVertex) {
   for (int i = 0; i < 1001; ++i) {  // odd: the last one has no partner
     vertices.push_back({coordinate(random), coordinate(random), coordinate(random)});
   }
-  vertices[10] = {5.0, 0.0, 0.0};  // the eye itself
+  vertices[10] = {5.0, 0.0, 0.0};        // the eye itself
   vertices[11] = {4.9999999, 0.0, 0.0};  // just in front of it
   const ViewParams view{5.0, 0.0, 1.5707963267948966};
   const Mat4 eyeFromWorld = EyeFromWorld(view);

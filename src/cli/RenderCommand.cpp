@@ -60,6 +60,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.shade = *shade;
   renderOptions.ramp = ShadeRamp(options.ramp);
   renderOptions.cullBackFaces = !options.noCull;
+  renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
   ViewParams view = DefaultView(scene.diagonalModelUnits);
   view.theta = options.theta;
   view.phi = options.phi;

@@ -38,6 +38,9 @@ struct RenderOptions {
   Vec3 sunEye = DefaultSunEye();
   double ambient = kDefaultAmbient;
   RenderVariant variant;
+  /// False: the depth buffer need not hold the frame's depth afterwards (only
+  /// the json dump reads it), so methods that need no depth test skip it.
+  bool keepDepth = true;
 };
 
 }  // namespace termshade

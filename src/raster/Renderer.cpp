@@ -20,6 +20,11 @@ double NearDistance(const Scene& scene) {
   return 1e-6 * (scene.diagonalModelUnits > 0.0 ? scene.diagonalModelUnits : 1.0);
 }
 
+// Only the Z-buffer's test and a caller reading depth afterwards need it cleared.
+bool NeedsDepth(const RenderOptions& options) {
+  return options.keepDepth || options.method == Method::kZBuffer;
+}
+
 }  // namespace
 
 Method ResolvedMethod(const Scene& scene, Method method) {
@@ -35,7 +40,7 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   RenderOptions resolved = options;
   resolved.method = ResolvedMethod(scene, options.method);
   cells.Clear();
-  depth.Clear();
+  if (NeedsDepth(resolved)) depth.Clear();
   clipPlanes_ = MakeViewClipPlanes(camera.projection, NearDistance(scene));
   eyeWorld_ = EyePositionWorld(camera.view);
   TransformVertices(scene, camera, resolved.variant, resolved.method == Method::kPainter);
@@ -190,13 +195,15 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const Rende
       }
     }
     std::sort(painterOrder_.begin(), painterOrder_.end());
+    const DepthRule rule = options.keepDepth ? DepthRule::kOverwrite : DepthRule::kCoverOnly;
     for (const auto& [zSum, i] : painterOrder_) {
-      drawn += DrawTriangle(scene, camera, i, DepthRule::kOverwrite, depth, cells);
+      drawn += DrawTriangle(scene, camera, i, rule, depth, cells);
     }
     return drawn;
   }
-  const DepthRule rule =
-      options.method == Method::kZBuffer ? DepthRule::kNearestWins : DepthRule::kOverwrite;
+  const DepthRule rule = options.method == Method::kZBuffer ? DepthRule::kNearestWins
+                         : options.keepDepth                ? DepthRule::kOverwrite
+                                                            : DepthRule::kCoverOnly;
   // The hot loop: plain pointers, the in-view case inline, the rest out of line.
   const FacePlane* const planes = scene.facePlanesWorld.data();
   const uint32_t* const starts = scene.faceTriangleStarts.data();

@@ -65,35 +65,52 @@ struct DepthInterpolator {
   }
 };
 
-template <DepthFormat kFormat>
+template <DepthFormat kFormat, DepthRule kRule>
 int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
-                  uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
+                  uint32_t faceNumber, DepthBuffer& depth, CellBuffer& cells,
                   const DepthEncoding& encoding);
+
+template <DepthRule kRule>
+int RasterizeWithRule(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                      uint32_t faceNumber, DepthBuffer& depth, CellBuffer& cells,
+                      const DepthEncoding& encoding) {
+  switch (encoding.format) {
+    case DepthFormat::kLinearZ:
+      return RasterizeWith<DepthFormat::kLinearZ, kRule>(a, b, c, faceNumber, depth, cells,
+                                                         encoding);
+    case DepthFormat::kFixed16InverseZ:
+      return RasterizeWith<DepthFormat::kFixed16InverseZ, kRule>(a, b, c, faceNumber, depth, cells,
+                                                                 encoding);
+    case DepthFormat::kFloatInverseZ:
+      break;
+  }
+  return RasterizeWith<DepthFormat::kFloatInverseZ, kRule>(a, b, c, faceNumber, depth, cells,
+                                                           encoding);
+}
 
 }  // namespace
 
 int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                       uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
                       const DepthEncoding& encoding) {
-  switch (encoding.format) {
-    case DepthFormat::kLinearZ:
-      return RasterizeWith<DepthFormat::kLinearZ>(a, b, c, faceNumber, rule, depth, cells,
-                                                  encoding);
-    case DepthFormat::kFixed16InverseZ:
-      return RasterizeWith<DepthFormat::kFixed16InverseZ>(a, b, c, faceNumber, rule, depth, cells,
-                                                          encoding);
-    case DepthFormat::kFloatInverseZ:
+  switch (rule) {
+    case DepthRule::kOverwrite:
+      return RasterizeWithRule<DepthRule::kOverwrite>(a, b, c, faceNumber, depth, cells, encoding);
+    case DepthRule::kCoverOnly:
+      // No depth: the format does not matter.
+      return RasterizeWith<DepthFormat::kFloatInverseZ, DepthRule::kCoverOnly>(
+          a, b, c, faceNumber, depth, cells, encoding);
+    case DepthRule::kNearestWins:
       break;
   }
-  return RasterizeWith<DepthFormat::kFloatInverseZ>(a, b, c, faceNumber, rule, depth, cells,
-                                                    encoding);
+  return RasterizeWithRule<DepthRule::kNearestWins>(a, b, c, faceNumber, depth, cells, encoding);
 }
 
 namespace {
 
-template <DepthFormat kFormat>
+template <DepthFormat kFormat, DepthRule kRule>
 int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
-                  uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
+                  uint32_t faceNumber, DepthBuffer& depth, CellBuffer& cells,
                   const DepthEncoding& encoding) {
   // Step 1: the cells whose samples the bounding box holds; most triangles
   // of a fine mesh hold none and stop here.
@@ -134,15 +151,20 @@ int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVert
     size_t index = cells.Index(col0, row);
     for (int col = col0; col <= col1; ++col, ++index) {
       if ((w12 | w20 | w01) >= 0) {
-        // The fill-rule bias (1 unit in 2^16 per cell^2) is negligible in the weights.
-        const float w = interpolate(w12, w20, w01);
-        float& stored = depth.At(index);
-        const bool wins = rule == DepthRule::kOverwrite || w > stored ||
-                          (w == stored && faceNumber < faces[index]);
-        if (wins) {
-          stored = w;
+        if constexpr (kRule == DepthRule::kCoverOnly) {
           faces[index] = faceNumber;
           ++written;
+        } else {
+          // The fill-rule bias (1 unit in 2^16 per cell^2) is negligible in the weights.
+          const float w = interpolate(w12, w20, w01);
+          float& stored = depth.At(index);
+          const bool wins = kRule == DepthRule::kOverwrite || w > stored ||
+                            (w == stored && faceNumber < faces[index]);
+          if (wins) {
+            stored = w;
+            faces[index] = faceNumber;
+            ++written;
+          }
         }
       }
       w12 += e12.stepX;
@@ -201,6 +223,11 @@ int RasterizeTriangleScanline(const RasterVertex& a, const RasterVertex& b, cons
     float w = leftW + (firstCol + 0.5F - leftU) * dw;
     size_t index = cells.Index(std::max(0, firstCol), row);
     for (int col = firstCol; col <= lastCol; ++col, ++index, w += dw) {
+      if (rule == DepthRule::kCoverOnly) {
+        faces[index] = faceNumber;
+        ++written;
+        continue;
+      }
       float& stored = depth.At(index);
       if (rule == DepthRule::kOverwrite || w > stored ||
           (w == stored && faceNumber < faces[index])) {

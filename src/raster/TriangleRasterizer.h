@@ -47,6 +47,7 @@ struct DepthEncoding {
 enum class DepthRule {
   kNearestWins,  ///< Z-buffer: larger w wins; equal w goes to the lower face number
   kOverwrite,    ///< painter and cull: the later triangle wins
+  kCoverOnly,    ///< as kOverwrite, the depth buffer neither read nor written
 };
 
 /// Covers the cell-center samples inside the triangle (either winding) with

@@ -30,6 +30,7 @@ Loaded<Scene> LoadViewerScene(const std::string& path) {
 
 ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
     : paths_(options.modelPaths), render_(options.render), colour_(!options.monochrome) {
+  render_.keepDepth = false;  // the screen shows glyphs only
   if (paths_.empty()) paths_.emplace_back();
   cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
 }
