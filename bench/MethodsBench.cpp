@@ -154,9 +154,10 @@ struct CaseResult {
   int compared = 0;
 };
 
-// Median frame time of every method, in milliseconds. Methods take turns, a
-// turntable of frames each, until the budget is spent, so the machine's
-// drift and noise fall on all of them alike.
+// Median frame time of every method, in milliseconds. Methods take turns
+// until the budget is spent, so the machine's drift and noise fall on all of
+// them alike; each turn draws the turntable once untimed (warming the caches
+// another method's turn cooled) and then times it twice.
 std::vector<double> MedianFrameMs(const Scene& scene, const std::vector<MethodCase>& methods,
                                   const std::vector<Camera>& cameras,
                                   const MethodsBenchOptions& options) {
@@ -171,16 +172,19 @@ std::vector<double> MedianFrameMs(const Scene& scene, const std::vector<MethodCa
     runner.cells.Resize(options.widthCells, options.heightCells);
     runner.depth.Resize(options.widthCells, options.heightCells);
   }
+  constexpr int kTimedPasses = 2;
   const auto deadline =
       Clock::now() + std::chrono::duration<double>(options.secondsPerCase * methods.size());
-  for (int round = 0; round < 3 || (Clock::now() < deadline && round < 2000); ++round) {
+  for (int turn = 0; turn < 2 || (Clock::now() < deadline && turn < 1000); ++turn) {
     for (size_t m = 0; m < methods.size(); ++m) {
       Runner& runner = runners[m];
-      for (const Camera& camera : cameras) {
-        const auto start = Clock::now();
-        runner.renderer.Render(scene, camera, methods[m].options, runner.depth, runner.cells);
-        runner.times.push_back(
-            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      for (int pass = 0; pass <= kTimedPasses; ++pass) {
+        for (const Camera& camera : cameras) {
+          const auto start = Clock::now();
+          runner.renderer.Render(scene, camera, methods[m].options, runner.depth, runner.cells);
+          const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+          if (pass > 0) runner.times.push_back(ms);
+        }
       }
     }
   }
