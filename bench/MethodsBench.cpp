@@ -10,6 +10,8 @@
 #include <iostream>
 #include <map>
 #include <numbers>
+#include <numeric>
+#include <random>
 #include <vector>
 
 #include "SpeedErrorPlot.h"
@@ -30,6 +32,7 @@ struct MethodCase {
   std::string name;
   RenderOptions options;
   bool measuresFaces = true;  ///< supersampled variants have no single sample per cell
+  bool plotted = true;        ///< the noise control repeats the default: table only
 };
 
 std::vector<MethodCase> Methods() {
@@ -44,6 +47,7 @@ std::vector<MethodCase> Methods() {
   auto same = [](RenderVariant&) {};
   return {
       {"zbuffer (1/z float, default)", with(Method::kZBuffer, same)},
+      {"zbuffer again (noise control)", with(Method::kZBuffer, same), true, false},
       {"auto", with(Method::kAuto, same)},
       {"cull", with(Method::kCull, same)},
       {"painter", with(Method::kPainter, same)},
@@ -154,43 +158,60 @@ struct CaseResult {
   int compared = 0;
 };
 
-// Median frame time of every method, in milliseconds. Methods take turns
-// until the budget is spent, so the machine's drift and noise fall on all of
-// them alike; each turn draws the turntable once untimed (warming the caches
-// another method's turn cooled) and then times it twice.
-std::vector<double> MedianFrameMs(const Scene& scene, const std::vector<MethodCase>& methods,
-                                  const std::vector<Camera>& cameras,
-                                  const MethodsBenchOptions& options) {
-  struct Runner {
-    Renderer renderer;
-    CellBuffer cells;
-    DepthBuffer depth;
-    std::vector<double> times;
-  };
-  std::vector<Runner> runners(methods.size());
-  for (Runner& runner : runners) {
-    runner.cells.Resize(options.widthCells, options.heightCells);
-    runner.depth.Resize(options.widthCells, options.heightCells);
-  }
-  constexpr int kTimedPasses = 2;
+// Frame times of every method: the median in milliseconds and, against the
+// default (method 0), the median over turns of the ratio of the two methods'
+// medians within the turn.
+struct MethodTiming {
+  double medianMs = 0.0;
+  double vsDefault = 1.0;
+};
+
+// Methods take turns, in a shuffled order, until the budget is spent, so drift and noise fall on
+// all alike, and ratios pair frames drawn close together in time. Each turn
+// draws the turntable once untimed (warming the caches the previous method
+// cooled), then times it. One renderer and one pair of buffers serve every
+// method, as in the viewer.
+std::vector<MethodTiming> TimeMethods(const Scene& scene, const std::vector<MethodCase>& methods,
+                                      const std::vector<Camera>& cameras,
+                                      const MethodsBenchOptions& options) {
+  Renderer renderer;
+  CellBuffer cells(options.widthCells, options.heightCells);
+  DepthBuffer depth;
+  depth.Resize(options.widthCells, options.heightCells);
+  std::vector<std::vector<double>> allMs(methods.size());
+  std::vector<std::vector<double>> turnMedianMs(methods.size());
+  std::vector<double> turnMs;
+  std::vector<size_t> order(methods.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::mt19937 shuffler(12345);
   const auto deadline =
       Clock::now() + std::chrono::duration<double>(options.secondsPerCase * methods.size());
-  for (int turn = 0; turn < 2 || (Clock::now() < deadline && turn < 1000); ++turn) {
-    for (size_t m = 0; m < methods.size(); ++m) {
-      Runner& runner = runners[m];
-      for (int pass = 0; pass <= kTimedPasses; ++pass) {
+  for (int turn = 0; turn < 3 || (Clock::now() < deadline && turn < 1000); ++turn) {
+    // A new order each turn, so no method always follows the same one.
+    std::shuffle(order.begin(), order.end(), shuffler);
+    for (const size_t m : order) {
+      turnMs.clear();
+      for (int pass = 0; pass < 2; ++pass) {
         for (const Camera& camera : cameras) {
           const auto start = Clock::now();
-          runner.renderer.Render(scene, camera, methods[m].options, runner.depth, runner.cells);
+          renderer.Render(scene, camera, methods[m].options, depth, cells);
           const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-          if (pass > 0) runner.times.push_back(ms);
+          if (pass > 0) turnMs.push_back(ms);
         }
       }
+      allMs[m].insert(allMs[m].end(), turnMs.begin(), turnMs.end());
+      turnMedianMs[m].push_back(Median(turnMs));
     }
   }
-  std::vector<double> medians;
-  for (Runner& runner : runners) medians.push_back(Median(std::move(runner.times)));
-  return medians;
+  std::vector<MethodTiming> timings(methods.size());
+  for (size_t m = 0; m < methods.size(); ++m) {
+    std::vector<double> ratios;
+    for (size_t t = 0; t < turnMedianMs[m].size(); ++t) {
+      ratios.push_back(turnMedianMs[m][t] / turnMedianMs[0][t]);
+    }
+    timings[m] = {Median(std::move(allMs[m])), Median(std::move(ratios))};
+  }
+  return timings;
 }
 
 // Face and shade error of one method on every frame.
@@ -275,17 +296,16 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
       referenceLevels.push_back(ReferenceLevels(named.scene, cameras.back(), lambert,
                                                 options.widthCells, options.heightCells));
     }
-    const std::vector<double> medianMs = MedianFrameMs(named.scene, methods, cameras, options);
+    const std::vector<MethodTiming> timings = TimeMethods(named.scene, methods, cameras, options);
     for (size_t m = 0; m < methods.size(); ++m) {
       const MethodCase& method = methods[m];
       CaseResult result = Measure(named, method, referenceLevels, cameras, options);
-      result.medianMs = medianMs[m];
+      result.medianMs = timings[m].medianMs;
       const double nsPerCell = 1e6 * result.medianMs / (options.widthCells * options.heightCells);
       char faceText[32] = "-";
       if (result.faceError >= 0)
         std::snprintf(faceText, sizeof faceText, "%.3f", 100 * result.faceError);
-      // Ratios within one run: the machine's drift cancels out of them.
-      const double vsDefault = result.medianMs / medianMs[0];
+      const double vsDefault = timings[m].vsDefault;
       std::printf("%-16s %-30s %9.4f %8.2f %9.2f %10s %9.3f\n", named.name.c_str(),
                   method.name.c_str(), result.medianMs, vsDefault, nsPerCell, faceText,
                   result.shadeErrorLevels);
@@ -293,8 +313,10 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
           << ',' << result.medianMs << ',' << vsDefault << ',' << nsPerCell << ','
           << (result.faceError >= 0 ? std::to_string(result.faceError) : "") << ','
           << result.shadeErrorLevels << ',' << result.compared << "\n";
-      points.push_back(
-          {named.name, method.name, result.medianMs, result.faceError, result.shadeErrorLevels});
+      if (method.plotted) {
+        points.push_back(
+            {named.name, method.name, result.medianMs, result.faceError, result.shadeErrorLevels});
+      }
     }
   }
   WriteSpeedErrorPlot(points, MachineDescription(), options.svgPath);
