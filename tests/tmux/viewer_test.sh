@@ -225,7 +225,20 @@ frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --s
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 
-# 14. A terminal that reports its pixel size sets the cell aspect: 10x18-pixel
+# 14. SGR (1006) mouse reports, which xterm-256color's terminfo asks for:
+# ESC [ < button ; column ; row (1-based), M for press or motion, m for release.
+run "clear; TERM=xterm-256color $bin"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start as xterm-256color"
+tm send-keys -t v -l "$(printf '\033[<0;41;13M')"
+tm send-keys -t v -l "$(printf '\033[<32;46;13M')"
+tm send-keys -t v -l "$(printf '\033[<0;51;15m')"
+wait_for 'theta -0\.70 phi 1\.10' 5 >/dev/null && pass || fail "SGR mouse drag did not orbit"
+tm send-keys -t v -l "$(printf '\033[<65;41;13M')"
+wait_for 'rho 19\.7' 5 >/dev/null && pass || fail "SGR wheel down did not double rho"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
+# 15. A terminal that reports its pixel size sets the cell aspect: 10x18-pixel
 # cells (aspect 1.8) give the frame 'render --cell-aspect 1.8' gives.
 run "clear; python3 -c 'import fcntl, struct, termios; fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack(\"HHHH\", 25, 80, 800, 450))'; $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start with a pixel size"
