@@ -23,10 +23,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   CellBuffer cells(23, 11);
   DepthBuffer depth;
   depth.Resize(23, 11);
-  for (Method method : {Method::kZBuffer, Method::kPainter, Method::kWire}) {
+  for (Method method : {Method::kZBuffer, Method::kPainter, Method::kWire, Method::kAuto}) {
     RenderOptions options;
     options.method = method;
     options.cullBackFaces = method != Method::kPainter;
+    options.keepDepth = method != Method::kAuto;  // auto as the viewer draws it
     ViewParams view = DefaultView(scene.diagonalModelUnits);
     for (double rhoScale : {1.0, 0.05}) {  // the second puts the eye inside the model
       view.rho = DefaultView(scene.diagonalModelUnits).rho * rhoScale;
