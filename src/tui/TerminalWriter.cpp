@@ -18,9 +18,30 @@ const char* Capability(const char* name) {
   return value == nullptr || value == reinterpret_cast<char*>(-1) ? "" : value;  // NOLINT
 }
 
+// Appends a terminfo string without its padding ("$<5>", "$<2*/>"): delays
+// for hardware terminals, which tputs would turn into time or NUL bytes and
+// which no terminal emulator needs.
+void AppendWithoutPadding(std::string& out, const char* text) {
+  for (const char* p = text; *p != '\0'; ++p) {
+    if (p[0] == '$' && p[1] == '<') {
+      const char* q = p + 2;
+      while ((*q >= '0' && *q <= '9') || *q == '.' || *q == '*' || *q == '/') ++q;
+      if (*q == '>' && q > p + 2) {
+        p = q;
+        continue;
+      }
+    }
+    out += *p;
+  }
+}
+
+void AppendCapability(std::string& out, const char* name) {
+  AppendWithoutPadding(out, Capability(name));
+}
+
 void AppendParameterized(std::string& out, const char* name, int a) {
   const char* format = Capability(name);
-  if (*format != '\0') out += tiparm(format, a);
+  if (*format != '\0') AppendWithoutPadding(out, tiparm(format, a));
 }
 
 constexpr int kEightYellow = 3;
@@ -30,7 +51,7 @@ constexpr int kEightCyan = 6;
 
 void TerminalWriter::AppendMove(int col, int row) {
   const char* cup = Capability("cup");
-  if (*cup != '\0') out_ += tiparm(cup, row, col);
+  if (*cup != '\0') AppendWithoutPadding(out_, tiparm(cup, row, col));
 }
 
 TerminalWriter::Attributes TerminalWriter::AttributesFor(const ScreenCell& cell, bool colour,
@@ -65,12 +86,12 @@ void TerminalWriter::AppendAttributes(const Attributes& wanted) {
                      (current_.foreground >= 0 && wanted.foreground < 0) ||
                      (current_.background >= 0 && wanted.background < 0);
   if (reset) {
-    out_ += Capability("sgr0");
+    AppendCapability(out_, "sgr0");
     current_ = Attributes{};
   }
-  if (wanted.reverse && !current_.reverse) out_ += Capability("rev");
-  if (wanted.bold && !current_.bold) out_ += Capability("bold");
-  if (wanted.dim && !current_.dim) out_ += Capability("dim");
+  if (wanted.reverse && !current_.reverse) AppendCapability(out_, "rev");
+  if (wanted.bold && !current_.bold) AppendCapability(out_, "bold");
+  if (wanted.dim && !current_.dim) AppendCapability(out_, "dim");
   if (wanted.foreground >= 0 && wanted.foreground != current_.foreground) {
     AppendParameterized(out_, "setaf", wanted.foreground);
   }
@@ -87,20 +108,20 @@ void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount
                     previous_.HeightCells() != grid.HeightCells() || colour != lastColour_;
   lastColour_ = colour;
   if (cursorShown_) {
-    out_ += Capability("civis");
+    AppendCapability(out_, "civis");
     cursorShown_ = false;
   }
   if (full) {
     // Clear the screen; with back-colour-erase it clears to the background
     // colour, and those cells need not be sent again.
-    out_ += Capability("sgr0");
+    AppendCapability(out_, "sgr0");
     current_ = Attributes{};
     ScreenCell cleared;
     if (colour && colours_ != ColourSupport::kNone && tigetflag("bce") == 1) {
       cleared.style = CellStyle::kBackground;
       AppendAttributes(AttributesFor(cleared, colour, levelCount));
     }
-    out_ += Capability("clear");
+    AppendCapability(out_, "clear");
     previous_.Resize(grid.WidthCells(), grid.HeightCells());
     for (int row = 0; row < grid.HeightCells(); ++row) {
       for (int col = 0; col < grid.WidthCells(); ++col) previous_.At(col, row) = cleared;
@@ -110,9 +131,7 @@ void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount
   // re-sent rather than paid for with a cursor move.
   int cursorCol = -1, cursorRow = -1;
   constexpr int kMaxGap = 4;
-  // With automatic margins but no deferred wrap, writing the bottom-right
-  // cell would scroll the screen: leave that one cell alone.
-  const bool avoidLastCell = tigetflag("am") == 1 && tigetflag("xenl") != 1;
+  const bool avoidLastCell = !BottomRightWritable();
   for (int row = 0; row < grid.HeightCells(); ++row) {
     int col = 0;
     const int rowEnd =
@@ -146,7 +165,7 @@ void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount
   // Step 2: the cursor, shown only where text is being typed.
   if (cursor) {
     AppendMove(cursor->first, cursor->second);
-    out_ += Capability("cnorm");
+    AppendCapability(out_, "cnorm");
     cursorShown_ = true;
   }
   WriteAll();
@@ -154,9 +173,14 @@ void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount
   valid_ = true;
 }
 
+bool TerminalWriter::BottomRightWritable() {
+  return tigetflag("am") != 1 || tigetflag("xenl") == 1;
+}
+
 TerminalWriter::~TerminalWriter() {
-  out_ = Capability("sgr0");
-  out_ += Capability("cnorm");
+  out_.clear();
+  AppendCapability(out_, "sgr0");
+  AppendCapability(out_, "cnorm");
   WriteAll();
 }
 

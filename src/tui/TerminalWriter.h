@@ -26,6 +26,9 @@ class TerminalWriter {
   /// Shows grid; cursor is (col, row) to show the cursor there, or nothing to hide it.
   void Present(const ScreenGrid& grid, bool colour, int levelCount,
                std::optional<std::pair<int, int>> cursor);
+  /// False when writing the bottom-right cell would scroll the screen
+  /// (automatic margins without deferred wrap): Present leaves it alone.
+  static bool BottomRightWritable();
   /// The next Present repaints every cell (after a resize, say).
   void Invalidate() { valid_ = false; }
   size_t LastFrameBytes() const { return lastFrameBytes_; }

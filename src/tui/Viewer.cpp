@@ -209,7 +209,9 @@ class EventLoop {
     if (prompting_) {
       cursor = painter_.PaintPrompt("open: ", editor_, grid_);
     } else {
-      painter_.PaintStatus(StatusText(stats, frameMs, cols), grid_);
+      // A terminal that would scroll on its bottom-right cell gets one cell less.
+      const int statusCols = TerminalWriter::BottomRightWritable() ? cols : cols - 1;
+      painter_.PaintStatus(StatusText(stats, frameMs, statusCols), grid_);
     }
     writer_.Present(grid_, state_.Colour(), levelCount, cursor);
   }

@@ -225,6 +225,19 @@ frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --s
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 
+# 13b. Old terminal descriptions: vt100's strings carry padding ($<5>),
+# which must not reach the screen; ansi would scroll on its bottom-right
+# cell, so the status line ends one cell early there.
+for term in vt100 ansi; do
+  run "clear; TERM=$term $bin"
+  wait_for '\? help' 5 >/dev/null || fail "viewer did not start as $term"
+  frame_matches_render "first_screen_as_$term" 24 "$src/data/sphere_cone.dat" --size 80x24
+  if screen | grep -qF '$<'; then fail "padding shown as $term"; else pass; fi
+  if screen | tail -n 1 | grep -qE '\? help ?$'; then pass; else fail "status line cut as $term"; fi
+  tm send-keys -t v q
+  wait_for '^\$ ?$' 5 >/dev/null
+done
+
 # 14. SGR (1006) mouse reports, which xterm-256color's terminfo asks for:
 # ESC [ < button ; column ; row (1-based), M for press or motion, m for release.
 run "clear; TERM=xterm-256color $bin"
