@@ -79,7 +79,8 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_option("--shade", options.shade, "contrast (default) or lambert")
       ->check(CLI::IsMember({"contrast", "lambert"}));
   command.add_option("--ramp", options.ramp,
-                     "shade characters from dark to bright (default .:-=+*#%@)");
+                     "shade characters from dark to bright, UTF-8, one cell wide each "
+                     "(default .:-=+*#%@; block elements, box drawing, braille and Latin-1 too)");
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
 }

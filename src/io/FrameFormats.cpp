@@ -4,6 +4,7 @@
 
 #include "geometry/ViewingTransform.h"
 #include "shade/Palette.h"
+#include "shade/Utf8.h"
 
 namespace termshade {
 namespace {
@@ -74,7 +75,7 @@ void AppendAnsiFrame(const CellBuffer& cells, int levelCount, std::string& out) 
         AppendSgr(foreground, kBackground256, out);
         current = level;
       }
-      out += cells.Glyph(col, row);
+      AppendUtf8(out, cells.Glyph(col, row));
     }
     out += "\x1b[0m\n";
   }

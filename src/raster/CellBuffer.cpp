@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "shade/Utf8.h"
+
 namespace termshade {
 
 void CellBuffer::Resize(int widthCells, int heightCells) {
@@ -15,14 +17,16 @@ void CellBuffer::Resize(int widthCells, int heightCells) {
 }
 
 void CellBuffer::Clear() {
-  std::fill(glyphs_.begin(), glyphs_.end(), ' ');
+  std::fill(glyphs_.begin(), glyphs_.end(), U' ');
   std::fill(faceNumbers_.begin(), faceNumbers_.end(), 0U);
   std::fill(levels_.begin(), levels_.end(), int16_t{-1});
 }
 
 std::string CellBuffer::RowText(int row) const {
-  const auto begin = glyphs_.begin() + static_cast<std::ptrdiff_t>(Index(0, row));
-  return {begin, begin + widthCells_};
+  std::string text;
+  text.reserve(static_cast<size_t>(widthCells_));
+  for (int col = 0; col < widthCells_; ++col) AppendUtf8(text, Glyph(col, row));
+  return text;
 }
 
 }  // namespace termshade

@@ -6,7 +6,7 @@
 
 namespace termshade {
 
-/// What a frame shows, cell by cell (row-major): the glyph, the 1-based face
+/// What a frame shows, cell by cell (row-major): the glyph (a code point), the 1-based face
 /// seen at the cell's sample (0 = background) and its shade level (-1 = none).
 /// The one buffer that both text dumps and the terminal screen are made from.
 class CellBuffer {
@@ -22,24 +22,24 @@ class CellBuffer {
   int HeightCells() const { return heightCells_; }
   size_t Index(int col, int row) const { return static_cast<size_t>(row) * widthCells_ + col; }
 
-  char Glyph(int col, int row) const { return glyphs_[Index(col, row)]; }
+  char32_t Glyph(int col, int row) const { return glyphs_[Index(col, row)]; }
   uint32_t FaceNumber(int col, int row) const { return faceNumbers_[Index(col, row)]; }
   int16_t Level(int col, int row) const { return levels_[Index(col, row)]; }
 
-  std::vector<char>& Glyphs() { return glyphs_; }
+  std::vector<char32_t>& Glyphs() { return glyphs_; }
   std::vector<uint32_t>& FaceNumbers() { return faceNumbers_; }
   std::vector<int16_t>& Levels() { return levels_; }
-  const std::vector<char>& Glyphs() const { return glyphs_; }
+  const std::vector<char32_t>& Glyphs() const { return glyphs_; }
   const std::vector<uint32_t>& FaceNumbers() const { return faceNumbers_; }
   const std::vector<int16_t>& Levels() const { return levels_; }
 
-  /// Row r as text, exactly WidthCells() characters.
+  /// Row r as UTF-8 text, exactly WidthCells() characters.
   std::string RowText(int row) const;
 
  private:
   int widthCells_ = 0;
   int heightCells_ = 0;
-  std::vector<char> glyphs_;
+  std::vector<char32_t> glyphs_;
   std::vector<uint32_t> faceNumbers_;
   std::vector<int16_t> levels_;
 };

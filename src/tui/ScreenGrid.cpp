@@ -14,14 +14,15 @@ void ScreenGrid::Put(int col, int row, std::string_view text, CellStyle style) {
   if (row < 0 || row >= heightCells_) return;
   for (char c : text) {
     if (col >= widthCells_) break;
-    if (col >= 0) At(col, row) = {c >= 0x20 && c < 0x7f ? c : '?', style, 0};
+    if (col >= 0)
+      At(col, row) = {c >= 0x20 && c < 0x7f ? static_cast<char32_t>(c) : U'?', style, 0};
     ++col;
   }
 }
 
 void ScreenGrid::FillRow(int row, CellStyle style) {
   if (row < 0 || row >= heightCells_) return;
-  for (int col = 0; col < widthCells_; ++col) At(col, row) = {' ', style, 0};
+  for (int col = 0; col < widthCells_; ++col) At(col, row) = {U' ', style, 0};
 }
 
 void ScreenGrid::Clear() {

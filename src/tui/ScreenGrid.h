@@ -14,9 +14,9 @@ enum class CellStyle : uint8_t {
   kFace,        ///< a face; the shade level says which colour
 };
 
-/// One character cell of the terminal: printable ASCII and its style.
+/// One character cell of the terminal: a one-cell-wide code point and its style.
 struct ScreenCell {
-  char glyph = ' ';
+  char32_t glyph = U' ';
   CellStyle style = CellStyle::kPlain;
   int8_t level = 0;  ///< shade level, for kFace
   bool operator==(const ScreenCell& other) const {

@@ -7,6 +7,7 @@
 #include <cerrno>
 
 #include "shade/Palette.h"
+#include "shade/Utf8.h"
 
 namespace termshade {
 namespace {
@@ -155,7 +156,7 @@ void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount
       for (int c = col; c < end; ++c) {
         const ScreenCell& cell = grid.At(c, row);
         AppendAttributes(AttributesFor(cell, colour, levelCount));
-        out_ += cell.glyph;
+        AppendUtf8(out_, cell.glyph);
       }
       cursorCol = end;
       cursorRow = row;

@@ -1,6 +1,7 @@
 #include "tui/Viewer.h"
 
 #include <curses.h>
+#include <langinfo.h>
 #include <poll.h>
 #include <unistd.h>
 
@@ -281,6 +282,13 @@ int RunViewer(const ViewerOptions& options) {
     return 1;
   }
   std::setlocale(LC_ALL, "");
+  const std::string codeset = nl_langinfo(CODESET);
+  if (!options.render.ramp.IsAscii() && codeset != "UTF-8") {
+    std::cerr << "termshade: the ramp has characters beyond ASCII, which need a UTF-8 locale "
+                 "(this one is "
+              << SanitizeForTerminal(codeset) << "); try LANG=C.UTF-8\n";
+    return 2;
+  }
   TerminalSession session;
   if (!session.Ok()) {
     std::cerr << "termshade: cannot start the terminal interface for TERM="

@@ -77,6 +77,12 @@ check bad_size_text 2 "--size" -- "$bin" render "$src/data/cube.dat" --size big
 check bad_aspect 2 "--cell-aspect" -- "$bin" render "$src/data/cube.dat" --cell-aspect 0
 check bad_rho 2 "--rho" -- "$bin" render "$src/data/cube.dat" --rho -3
 check blank_ramp 2 "blank" -- "$bin" render "$src/data/cube.dat" --ramp ' .:'
+check block_ramp 0 "" -- env LC_ALL=C "$bin" render "$src/data/cube.dat" --size 40x12 --ramp '░▒▓█'
+expect block_ramp_rows_are_40_characters test "$(python3 -c 'import sys; print(set(len(l.rstrip("\n")) for l in open(sys.argv[1], encoding="utf-8")))' "$work/out")" = "{40}"
+expect block_ramp_uses_blocks grep -q '█' "$work/out"
+check wide_ramp 2 "U+6F22 cannot be a ramp character" -- "$bin" render "$src/data/cube.dat" --ramp '漢字'
+check escape_in_ramp 2 "U+001B" -- "$bin" render "$src/data/cube.dat" --ramp $'.:\e[7m'
+check invalid_utf8_ramp 2 "not valid UTF-8" -- "$bin" render "$src/data/cube.dat" --ramp $'.:\xff'
 check unknown_option 2 "" -- "$bin" render "$src/data/cube.dat" --frobnicate
 check missing_model 2 "model" -- "$bin" render
 check unknown_scene 2 "unknown scene" -- "$bin" generate nothing

@@ -9,7 +9,8 @@ work=$(mktemp -d)
 passed=0
 failed=0
 
-tm() { tmux -L "$socket" -f /dev/null "$@"; }
+# -u: UTF-8 whatever this script's locale (CI may have none).
+tm() { tmux -u -L "$socket" -f /dev/null "$@"; }
 cleanup() { tm kill-server 2>/dev/null; sleep 0.2; rm -rf "$work"; }
 trap cleanup EXIT
 
@@ -224,6 +225,17 @@ wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8"
 frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
+
+# 13a. A ramp beyond ASCII: the same screen as render's in a UTF-8 locale,
+# a clear refusal in the C locale (the terminal could not show it).
+run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin --ramp '░▒▓█'"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start with a block ramp"
+frame_matches_render block_ramp_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24 --ramp '░▒▓█'
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+run "clear; LANG=C LC_ALL=C $bin --ramp '░▒▓█'; echo exit=\$?"
+wait_for 'need a UTF-8 locale' 5 >/dev/null && pass || fail "block ramp in the C locale not refused"
+wait_for 'exit=2' 5 >/dev/null && pass || fail "block ramp in the C locale: exit code"
 
 # 13b. Old terminal descriptions: vt100's strings carry padding ($<5>),
 # which must not reach the screen; ansi would scroll on its bottom-right

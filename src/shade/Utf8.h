@@ -1,0 +1,23 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace termshade {
+
+/// The code points of UTF-8 text, or nothing when it is not valid UTF-8
+/// (overlong forms, surrogates and values past U+10FFFF are invalid).
+std::optional<std::vector<char32_t>> DecodeUtf8(std::string_view text);
+
+/// Appends the UTF-8 bytes of one code point.
+void AppendUtf8(std::string& out, char32_t codePoint);
+
+/// True for the glyphs a shade ramp may use: printable ASCII but the blank,
+/// printable Latin-1, box drawing, block elements, geometric shapes and
+/// braille. Terminals show these one cell wide (block elements and some
+/// shapes are two wide in East Asian "ambiguous width" settings).
+bool IsRampGlyph(char32_t codePoint);
+
+}  // namespace termshade
