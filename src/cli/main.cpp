@@ -29,6 +29,10 @@ int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
     std::cout << app.help("", CLI::AppFormatMode::All);
     done = true;
     return 0;
+  } catch (const CLI::CallForVersion& version) {
+    std::cout << version.what() << "\n";
+    done = true;
+    return 0;
   } catch (const CLI::ParseError& e) {
     std::cerr << "termshade: " << e.what() << "\nRun 'termshade --help' for the options.\n";
     done = true;
@@ -108,6 +112,7 @@ int Run(int argc, char** argv) {
       "With no command, opens the interactive viewer on MODEL files (the demo scene if none);\n"
       "press ? in the viewer for its keys."};
   app.set_help_all_flag("--help-all", "all commands' options");
+  app.set_version_flag("--version", std::string("termshade ") + TERMSHADE_VERSION);
   app.require_subcommand(0, 1);
 
   // The viewer: termshade [MODEL...]

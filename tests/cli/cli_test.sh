@@ -38,6 +38,8 @@ check render_without_term 0 "" -- env -u TERM "$bin" render "$src/data/wedge.dat
 expect render_without_term_size test "$(wc -l <"$work/out")" -eq 12
 check help 0 "" -- "$bin" --help
 expect help_lists_render grep -q "render" "$work/out"
+check version 0 "" -- "$bin" --version
+expect version_names_the_program grep -qE '^termshade [0-9]+\.[0-9]+\.[0-9]+$' "$work/out"
 check render_help 0 "" -- "$bin" render --help
 for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --format --frames --step --output --no-cull; do
   expect "render_help_documents_$option" grep -q -- "$option" "$work/out"
