@@ -154,16 +154,35 @@ TEST(StatusLine, AMessageKeepsItsFirstWordAndItsEnd) {
   EXPECT_EQ(ComposeStatusLine(segments, 40), "opened /a...of/the/project/data/cube.dat");
 }
 
+void Type(LineEditor& editor, std::string_view bytes) {
+  for (char c : bytes) editor.InsertByte(static_cast<unsigned char>(c));
+}
+
 TEST(LineEditor, EditsAndRefusesControlCharacters) {
   LineEditor editor;
-  for (char c : std::string("cub.dat")) editor.Insert(c);
+  Type(editor, "cub.dat");
   editor.Home();
   for (int i = 0; i < 3; ++i) editor.Right();
-  editor.Insert('e');
-  editor.Insert('\x1b');
+  Type(editor, "e\x1b\x7f\xC2\x9B");  // ESC, DEL and the C1 CSI are dropped
   editor.End();
   editor.Backspace();
   EXPECT_EQ(editor.Text(), "cube.da");
+}
+
+TEST(LineEditor, AssemblesUtf8AndCountsCodePoints) {
+  LineEditor editor;
+  Type(editor, "caf\xC3\xA9/\xE2\x96\x91.dat");  // café/░.dat
+  EXPECT_EQ(editor.Text(), "caf\xC3\xA9/\xE2\x96\x91.dat");
+  EXPECT_EQ(editor.Cursor(), 10U);
+  editor.Home();
+  for (int i = 0; i < 4; ++i) editor.Right();
+  editor.Backspace();  // the e-acute, both of its bytes
+  EXPECT_EQ(editor.Text(), "caf/\xE2\x96\x91.dat");
+  // Broken sequences leave nothing behind: a lone continuation byte, a lead
+  // byte cut short by ASCII, an overlong form.
+  editor.End();
+  Type(editor, "\x80\xE2\x96x\xC0\xAF");
+  EXPECT_EQ(editor.Text(), "caf/\xE2\x96\x91.datx");
 }
 
 }  // namespace

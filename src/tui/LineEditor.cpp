@@ -1,20 +1,70 @@
 #include "tui/LineEditor.h"
 
-namespace termshade {
+#include "shade/Utf8.h"
 
-void LineEditor::Insert(char c) {
-  if (c < 0x20 || c > 0x7e || text_.size() >= 4096) return;
-  text_.insert(text_.begin() + static_cast<std::ptrdiff_t>(cursor_), c);
+namespace termshade {
+namespace {
+
+constexpr size_t kMaxCodePoints = 4096;
+
+// Bytes in the UTF-8 sequence a lead byte starts; 0 when it cannot lead one.
+size_t SequenceBytes(unsigned char lead) {
+  if (lead >= 0xC2 && lead <= 0xDF) return 2;
+  if (lead >= 0xE0 && lead <= 0xEF) return 3;
+  if (lead >= 0xF0 && lead <= 0xF4) return 4;
+  return 0;
+}
+
+bool IsControl(char32_t c) {
+  return c < 0x20 || (c >= 0x7F && c <= 0x9F);
+}
+
+}  // namespace
+
+void LineEditor::InsertByte(unsigned char byte) {
+  if (byte < 0x80) {
+    pending_.clear();
+    Insert(byte);
+    return;
+  }
+  // Step 1: a lead byte starts a sequence; a continuation byte extends one.
+  const bool continuation = (byte & 0xC0) == 0x80;
+  if (!continuation) pending_.clear();
+  if (continuation && pending_.empty()) return;
+  pending_ += static_cast<char>(byte);
+  const size_t wanted = SequenceBytes(static_cast<unsigned char>(pending_[0]));
+  if (wanted == 0) {
+    pending_.clear();
+    return;
+  }
+  // Step 2: once complete, one code point (or nothing, if invalid).
+  if (pending_.size() < wanted) return;
+  const auto decoded = DecodeUtf8(pending_);
+  pending_.clear();
+  if (decoded && decoded->size() == 1) Insert(decoded->front());
+}
+
+void LineEditor::Insert(char32_t codePoint) {
+  if (IsControl(codePoint) || text_.size() >= kMaxCodePoints) return;
+  text_.insert(text_.begin() + static_cast<std::ptrdiff_t>(cursor_), codePoint);
   ++cursor_;
 }
 
+std::string LineEditor::Text() const {
+  std::string utf8;
+  for (char32_t c : text_) AppendUtf8(utf8, c);
+  return utf8;
+}
+
 void LineEditor::Backspace() {
+  pending_.clear();
   if (cursor_ == 0) return;
   --cursor_;
   text_.erase(cursor_, 1);
 }
 
 void LineEditor::Delete() {
+  pending_.clear();
   if (cursor_ < text_.size()) text_.erase(cursor_, 1);
 }
 
@@ -29,6 +79,7 @@ void LineEditor::Right() {
 void LineEditor::Clear() {
   text_.clear();
   cursor_ = 0;
+  pending_.clear();
 }
 
 }  // namespace termshade

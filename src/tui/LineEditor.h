@@ -1,14 +1,18 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace termshade {
 
 /// A one-line text field with a cursor (the viewer's "open file" prompt).
-/// Accepts printable ASCII only, so nothing typed can reach the terminal as a control.
+/// Holds code points; typed bytes arrive one at a time and UTF-8 sequences
+/// are assembled here. Control characters (C0, DEL, C1) and invalid UTF-8
+/// are dropped, so nothing typed can reach the terminal as a control.
 class LineEditor {
  public:
-  void Insert(char c);
+  /// One byte of typed input (ASCII, or part of a UTF-8 sequence).
+  void InsertByte(unsigned char byte);
   void Backspace();
   void Delete();
   void Left();
@@ -17,12 +21,18 @@ class LineEditor {
   void End() { cursor_ = text_.size(); }
   void Clear();
 
-  const std::string& Text() const { return text_; }
+  /// The text as code points; Cursor() counts code points.
+  const std::u32string& CodePoints() const { return text_; }
+  /// The text as UTF-8 (a path to open).
+  std::string Text() const;
   size_t Cursor() const { return cursor_; }
 
  private:
-  std::string text_;
+  void Insert(char32_t codePoint);
+
+  std::u32string text_;
   size_t cursor_ = 0;
+  std::string pending_;  ///< the start of a UTF-8 sequence still being typed
 };
 
 }  // namespace termshade

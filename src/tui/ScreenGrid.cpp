@@ -1,6 +1,7 @@
 #include "tui/ScreenGrid.h"
 
 #include <algorithm>
+#include <cwchar>
 
 namespace termshade {
 
@@ -16,6 +17,16 @@ void ScreenGrid::Put(int col, int row, std::string_view text, CellStyle style) {
     if (col >= widthCells_) break;
     if (col >= 0)
       At(col, row) = {c >= 0x20 && c < 0x7f ? static_cast<char32_t>(c) : U'?', style, 0};
+    ++col;
+  }
+}
+
+void ScreenGrid::Put(int col, int row, std::u32string_view text, CellStyle style) {
+  if (row < 0 || row >= heightCells_) return;
+  for (char32_t c : text) {
+    if (col >= widthCells_) break;
+    const bool oneCell = c < 0x80 ? c >= 0x20 && c < 0x7f : wcwidth(static_cast<wchar_t>(c)) == 1;
+    if (col >= 0) At(col, row) = {oneCell ? c : U'?', style, 0};
     ++col;
   }
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -38,6 +39,10 @@ class ScreenGrid {
   /// Writes text from (col, row), cut at the right edge; bytes outside
   /// printable ASCII become '?'.
   void Put(int col, int row, std::string_view text, CellStyle style);
+  /// The same for code points: those the locale does not show one cell
+  /// wide (wide, combining, control, or anything beyond ASCII in the C
+  /// locale) become '?'.
+  void Put(int col, int row, std::u32string_view text, CellStyle style);
   void FillRow(int row, CellStyle style);
   void Clear();
 

@@ -36,7 +36,8 @@ std::pair<int, int> ScreenPainter::PaintPrompt(const std::string& label, const L
   // Scroll the field so the cursor stays visible.
   const int cursor = static_cast<int>(editor.Cursor());
   const int offset = std::max(0, cursor - fieldWidth + 1);
-  grid.Put(fieldStart, row, std::string_view(editor.Text()).substr(static_cast<size_t>(offset)),
+  grid.Put(fieldStart, row,
+           std::u32string_view(editor.CodePoints()).substr(static_cast<size_t>(offset)),
            CellStyle::kPlain);
   return {std::min(width - 1, fieldStart + cursor - offset), row};
 }

@@ -162,7 +162,7 @@ class EventLoop {
       case KEY_RESIZE:
         break;
       default:
-        if (key >= 0x20 && key < 0x7f) editor_.Insert(static_cast<char>(key));
+        if (key >= 0 && key < 0x100) editor_.InsertByte(static_cast<unsigned char>(key));
     }
     dirty_ = true;
   }

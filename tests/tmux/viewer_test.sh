@@ -233,6 +233,19 @@ wait_for '\? help' 5 >/dev/null || fail "viewer did not start with a block ramp"
 frame_matches_render block_ramp_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24 --ramp '░▒▓█'
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
+# The prompt takes UTF-8: a path typed with an accent opens (the status
+# line shows the name's bytes beyond ASCII escaped).
+cp "$src/data/cube.dat" "$work/café.dat"
+run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8 for the prompt"
+tm send-keys -t v o
+tm send-keys -t v -l "$work/café.dat"
+wait_for 'open: .*café\.dat' 5 >/dev/null && pass || fail "prompt did not show the accented path"
+tm send-keys -t v Enter
+wait_for 'opened .*caf\\xC3\\xA9\.dat' 5 >/dev/null && pass || fail "accented path did not open"
+frame_matches_render accented_path_opened 24 "$work/café.dat" --size 80x24
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
 run "clear; LANG=C LC_ALL=C $bin --ramp '░▒▓█'; echo exit=\$?"
 wait_for 'need a UTF-8 locale' 5 >/dev/null && pass || fail "block ramp in the C locale not refused"
 wait_for 'exit=2' 5 >/dev/null && pass || fail "block ramp in the C locale: exit code"
