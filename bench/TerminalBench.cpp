@@ -37,6 +37,7 @@ class PtySession {
     if (pid_ < 0) return false;
     if (pid_ == 0) {
       std::vector<char*> args;
+      args.reserve(argv.size() + 1);
       for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
       args.push_back(nullptr);
       setenv("TERM", "xterm-256color", 1);

@@ -17,7 +17,7 @@ void RenderTurntable(benchmark::State& state, const Scene& scene, Method method)
   DepthBuffer depth;
   depth.Resize(160, 48);
   ViewParams view = DefaultView(scene.diagonalModelUnits);
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
     view.theta += 0.01;
     renderer.Render(scene, FitCamera(scene, view, 160, 48, 2.0), options, depth, cells);
     benchmark::DoNotOptimize(cells.FaceNumbers().data());
@@ -43,7 +43,7 @@ void BM_PlainLoop200k(benchmark::State& state) {  // NOLINT(readability-identifi
   static const Scene scene = PrepareScene(GenerateSphere(317, 317));
   ViewParams view = DefaultView(scene.diagonalModelUnits);
   std::vector<float> projected(scene.verticesWorld.size() * 2);
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
     view.theta += 0.01;
     const Camera camera = FitCamera(scene, view, 160, 48, 2.0);
     const Mat4 m = EyeFromWorld(camera.view);
