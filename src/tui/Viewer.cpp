@@ -116,6 +116,10 @@ class EventLoop {
       prompting_ = true;
       editor_.Clear();
     }
+    if ((action == ViewerAction::kNextModel || action == ViewerAction::kPreviousModel) &&
+        state_.ModelCount() > 1) {
+      ShowBusy("loading...");
+    }
     if (action != ViewerAction::kNone) {
       state_.SetMessage("");
       state_.Apply(action);
@@ -132,7 +136,10 @@ class EventLoop {
       case '\n':
       case KEY_ENTER:
         prompting_ = false;
-        if (!editor_.Text().empty()) state_.OpenPath(editor_.Text());
+        if (!editor_.Text().empty()) {
+          ShowBusy("loading " + SanitizeForTerminal(editor_.Text(), 4096));
+          state_.OpenPath(editor_.Text());
+        }
         break;
       case KEY_BACKSPACE:
       case 127:
@@ -183,6 +190,16 @@ class EventLoop {
       if ((event.bstate & BUTTON1_RELEASED) != 0) dragging_ = false;
     }
     dirty_ = true;
+  }
+
+  // Puts what over the status line at once: loading a big model takes a while.
+  void ShowBusy(const std::string& what) {
+    const int cols = grid_.WidthCells(), rows = grid_.HeightCells();
+    if (cols < kMinCols || rows < kMinRows) return;
+    const int statusCols = TerminalWriter::BottomRightWritable() ? cols : cols - 1;
+    painter_.PaintStatus(ComposeStatusLine({{what, 0, false, Elision::kMiddle}}, statusCols),
+                         grid_);
+    writer_.Present(grid_, state_.Colour(), state_.Render().ramp.LevelCount(), std::nullopt);
   }
 
   void Draw() {

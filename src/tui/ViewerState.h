@@ -40,6 +40,7 @@ class ViewerState {
   const ViewParams& View() const { return view_; }
   double CellAspect() const { return cellAspect_; }
   std::string ModelLabel() const;
+  size_t ModelCount() const { return paths_.size(); }
   bool Colour() const { return colour_; }
   bool LightMode() const { return lightMode_; }
   bool Turntable() const { return turntable_; }

@@ -149,6 +149,31 @@ frame_matches_render opened_model_shown 24 "$src/data/cube.dat" --size 80x24
 tm send-keys -t v p
 wait_for 'demo' 5 >/dev/null && pass || fail "p did not go back to the demo"
 
+# 7b. A big model (half a million vertices, about a second to load) shows
+# "loading" on the status line while it loads.
+python3 - "$work/big.dat" <<'PY'
+import math, sys
+n = 700
+with open(sys.argv[1], "w") as out:
+    for i in range(1, n):
+        for j in range(n):
+            t, p = math.pi * i / n, 2 * math.pi * j / n
+            out.write("%d %.6f %.6f %.6f\n" % ((i - 1) * n + j + 1, math.sin(t) * math.cos(p),
+                                                math.sin(t) * math.sin(p), math.cos(t)))
+    out.write("Faces:\n")
+    for i in range(n - 2):
+        for j in range(n):
+            k = (j + 1) % n
+            out.write("%d %d %d %d.\n" % (i * n + j + 1, (i + 1) * n + j + 1, (i + 1) * n + k + 1,
+                                           i * n + k + 1))
+PY
+tm send-keys -t v o
+tm send-keys -t v -l "$work/big.dat"
+tm send-keys -t v Enter
+wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message for a big model"
+wait_for 'opened .*big\.dat' 30 >/dev/null && pass || fail "the big model did not open"
+rm -f "$work/big.dat"
+
 # 8. q exits and leaves the shell usable (echo on, canonical input).
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null || fail "q did not return to the shell"
