@@ -18,9 +18,9 @@ namespace {
 // NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables)
 std::atomic<int> gSignalWriteFd{-1};
 
-constexpr int kHandledSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+constexpr int kHandledSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGTSTP, SIGCONT};
 
-extern "C" void OnTerminatingSignal(int signalNumber) {
+extern "C" void OnHandledSignal(int signalNumber) {
   const int fd = gSignalWriteFd.load();
   if (fd >= 0) {
     const auto byte = static_cast<char>(signalNumber);
@@ -103,7 +103,7 @@ TerminalSession::~TerminalSession() {
 void TerminalSession::InstallSignalHandlers() {
   gSignalWriteFd.store(signalPipe_[1]);
   struct sigaction action {};
-  action.sa_handler = OnTerminatingSignal;
+  action.sa_handler = OnHandledSignal;
   sigemptyset(&action.sa_mask);
   action.sa_flags = 0;  // no SA_RESTART: a signal wakes the event loop's poll
   for (int signalNumber : kHandledSignals) sigaction(signalNumber, &action, nullptr);
@@ -114,11 +114,33 @@ void TerminalSession::RestoreSignalHandlers() {
   for (int signalNumber : kHandledSignals) std::signal(signalNumber, SIG_DFL);
 }
 
-bool TerminalSession::TakeSignal() {
+TerminalSession::Signals TerminalSession::TakeSignals() {
+  Signals taken;
   char buffer[16];
-  bool any = false;
-  while (read(signalPipe_[0], buffer, sizeof buffer) > 0) any = true;
-  return any;
+  for (ssize_t n; (n = read(signalPipe_[0], buffer, sizeof buffer)) > 0;) {
+    for (ssize_t i = 0; i < n; ++i) {
+      const int signalNumber = buffer[i];
+      if (signalNumber == SIGTSTP) {
+        taken.suspend = true;
+      } else if (signalNumber == SIGCONT) {
+        taken.resumed = true;
+      } else {
+        taken.terminate = true;
+      }
+    }
+  }
+  return taken;
+}
+
+void TerminalSession::Suspend() {
+  // Step 1: the terminal back as the shell had it (endwin: modes, mouse, cursor).
+  endwin();
+  // Step 2: stop for real, as SIGTSTP's default action does; fg continues here.
+  std::signal(SIGTSTP, SIG_DFL);
+  raise(SIGTSTP);
+  InstallSignalHandlers();
+  // Step 3: the viewer's modes again (doupdate restores them, with mouse and keypad).
+  doupdate();
 }
 
 double TerminalSession::ReportedCellAspect() {

@@ -16,7 +16,8 @@ std::optional<std::string> TerminalProblem();
 /// reads and decodes input and knows the terminal; drawing goes through
 /// TerminalWriter.
 /// SIGINT, SIGTERM, SIGHUP and SIGQUIT are turned into a byte on a pipe that
-/// the event loop polls, so they end the loop and the destructor runs.
+/// the event loop polls, so they end the loop and the destructor runs;
+/// SIGTSTP (Ctrl-Z) and SIGCONT reach the loop the same way.
 class TerminalSession {
  public:
   TerminalSession();
@@ -32,10 +33,18 @@ class TerminalSession {
   int NextKey();
   static int WidthCells();
   static int HeightCells();
-  /// The read end of the signal pipe: readable once a terminating signal arrived.
+  /// The read end of the signal pipe: readable once a handled signal arrived.
   int SignalFd() const { return signalPipe_[0]; }
-  /// True once a terminating signal arrived (drains the pipe).
-  bool TakeSignal();
+  /// The signals that arrived since the last call (drains the pipe).
+  struct Signals {
+    bool terminate = false;  ///< SIGINT, SIGTERM, SIGHUP or SIGQUIT
+    bool suspend = false;    ///< SIGTSTP: the user asked to stop (Ctrl-Z)
+    bool resumed = false;    ///< SIGCONT: the screen may have been drawn over
+  };
+  Signals TakeSignals();
+  /// Gives the terminal back, stops the process as SIGTSTP would, and takes
+  /// the terminal again once continued (fg). The screen must then be redrawn.
+  void Suspend();
   /// Cell height / width from the terminal's pixel size (TIOCGWINSZ), or 0.
   static double ReportedCellAspect();
 

@@ -179,10 +179,16 @@ bool TerminalWriter::BottomRightWritable() {
 }
 
 TerminalWriter::~TerminalWriter() {
+  Release();
+}
+
+void TerminalWriter::Release() {
   out_.clear();
   AppendCapability(out_, "sgr0");
   AppendCapability(out_, "cnorm");
   WriteAll();
+  current_ = Attributes{};
+  cursorShown_ = true;
 }
 
 void TerminalWriter::WriteAll() {

@@ -29,8 +29,15 @@ class TerminalWriter {
   /// False when writing the bottom-right cell would scroll the screen
   /// (automatic margins without deferred wrap): Present leaves it alone.
   static bool BottomRightWritable();
-  /// The next Present repaints every cell (after a resize, say).
-  void Invalidate() { valid_ = false; }
+  /// The next Present repaints every cell (after a resize, say) and hides the
+  /// cursor again.
+  void Invalidate() {
+    valid_ = false;
+    cursorShown_ = true;
+  }
+  /// Default attributes and a visible cursor, now (before the shell gets the
+  /// terminal back for a while).
+  void Release();
   size_t LastFrameBytes() const { return lastFrameBytes_; }
 
  private:

@@ -72,7 +72,7 @@ class EventLoop {
       }
       pollfd fds[2] = {{STDIN_FILENO, POLLIN, 0}, {session_.SignalFd(), POLLIN, 0}};
       poll(fds, 2, timeoutMs);
-      if (session_.TakeSignal()) return;
+      if (!HandleSignals()) return;
       if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) return;  // terminal gone
       // Step 2: every key that queued up while drawing, applied before one redraw.
       for (int key = session_.NextKey(); key != ERR; key = session_.NextKey()) HandleKey(key);
@@ -86,6 +86,22 @@ class EventLoop {
   }
 
  private:
+  // False when a signal ends the viewer.
+  bool HandleSignals() {
+    TerminalSession::Signals signals = session_.TakeSignals();
+    if (signals.suspend) {
+      writer_.Release();
+      session_.Suspend();
+      signals.terminate = signals.terminate || session_.TakeSignals().terminate;
+      signals.resumed = true;
+    }
+    if (signals.resumed) {  // the shell or another program drew over the screen
+      writer_.Invalidate();
+      dirty_ = true;
+    }
+    return !signals.terminate;
+  }
+
   void HandleKey(int key) {
     if (prompting_) {
       HandlePromptKey(key);

@@ -196,6 +196,24 @@ for how in TERM HUP INT; do
   wait_for '^(icanon echo|echo icanon)' 5 >/dev/null && pass || fail "terminal not sane after SIG$how"
 done
 
+# 9b. Ctrl-Z gives the shell a sane terminal; fg brings the whole screen back
+# (not a blank one) with keys working.
+tm send-keys -t v C-l
+run "clear; $bin"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start for Ctrl-Z"
+tm send-keys -t v C-z
+wait_for 'Stopped' 5 >/dev/null && pass || fail "Ctrl-Z did not stop the viewer"
+run "stty -a | tr ' ' '\n' | grep -xE 'echo|icanon' | tr '\n' ' '; echo; echo stopped-\$((6*7))"
+wait_for '^(icanon echo|echo icanon)' 5 >/dev/null && pass || fail "terminal not sane after Ctrl-Z"
+wait_for 'stopped-42' 5 >/dev/null || fail "shell not usable after Ctrl-Z"
+run "fg"
+wait_for 'theta 0\.30 phi 1\.30' 5 >/dev/null || fail "no status line after fg"
+frame_matches_render whole_screen_after_fg 24 "$src/data/sphere_cone.dat" --size 80x24
+tm send-keys -t v Right
+wait_for 'theta 0\.40' 5 >/dev/null && pass || fail "arrow keys dead after fg"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null || fail "q after fg"
+
 # 10. Bad models, escapes in names, dumb terminals.
 run "clear; $bin $src/tests/models/bad/undefined_vertex.dat; echo exit=\$?"
 wait_for 'undefined_vertex.dat:14:7: vertex 12 is not defined' 5 >/dev/null && pass || fail "bad model at start"
