@@ -119,7 +119,7 @@ TerminalSession::Signals TerminalSession::TakeSignals() {
   char buffer[16];
   for (ssize_t n; (n = read(signalPipe_[0], buffer, sizeof buffer)) > 0;) {
     for (ssize_t i = 0; i < n; ++i) {
-      const int signalNumber = buffer[i];
+      const int signalNumber = static_cast<unsigned char>(buffer[i]);
       if (signalNumber == SIGTSTP) {
         taken.suspend = true;
       } else if (signalNumber == SIGCONT) {
