@@ -56,6 +56,17 @@ TEST(DatReader, TwoVerticesAreASegmentAndOneIsNothing) {
   EXPECT_EQ(mesh.segments[0], (std::array<uint32_t, 2>{0, 1}));
 }
 
+TEST(DatReader, SkipsAUtf8ByteOrderMark) {
+  EXPECT_EQ(LoadGood("utf8_byte_order_mark.dat").FaceCount(), 1U);
+  // Columns on line 1 count from after the mark.
+  Loaded<Mesh> bad = ParseDat(
+      "\xEF\xBB\xBF"
+      "1 0 x 0\n",
+      "bom.dat");
+  ASSERT_FALSE(bad.Ok());
+  EXPECT_EQ(bad.Error().ToString().substr(0, 12), "bom.dat:1:5:");
+}
+
 TEST(DatReader, CrlfBlankLinesAndTabs) {
   EXPECT_EQ(LoadGood("crlf_line_endings.dat").FaceCount(), 1U);
   EXPECT_EQ(LoadGood("blank_lines_and_tabs.dat").FaceCount(), 1U);

@@ -291,6 +291,11 @@ class DatParser {
 }  // namespace
 
 Loaded<Mesh> ParseDat(std::string_view text, const std::string& fileName) {
+  // A UTF-8 byte order mark (some Windows editors write one) is not content;
+  // columns on line 1 count from after it, as an editor shows them.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
+    text.remove_prefix(kByteOrderMark.size());
   return DatParser(text, fileName).Run();
 }
 
