@@ -6,6 +6,7 @@
 #include "geometry/FitCamera.h"
 #include "support/TestSupport.h"
 #include "tui/LineEditor.h"
+#include "tui/PromptPath.h"
 #include "tui/StatusLine.h"
 #include "tui/ViewerState.h"
 
@@ -183,6 +184,18 @@ TEST(LineEditor, AssemblesUtf8AndCountsCodePoints) {
   editor.End();
   Type(editor, "\x80\xE2\x96x\xC0\xAF");
   EXPECT_EQ(editor.Text(), "caf/\xE2\x96\x91.datx");
+}
+
+TEST(PromptPath, TrimsUnquotesAndExpandsHome) {
+  EXPECT_EQ(PromptPath("  data/cube.dat \t", "/home/ann"), "data/cube.dat");
+  EXPECT_EQ(PromptPath("'/tmp/my models/cube.dat' ", "/home/ann"), "/tmp/my models/cube.dat");
+  EXPECT_EQ(PromptPath("\"/tmp/a.obj\"", "/home/ann"), "/tmp/a.obj");
+  EXPECT_EQ(PromptPath("'unbalanced.dat", "/home/ann"), "'unbalanced.dat");
+  EXPECT_EQ(PromptPath("~/models/a.dat", "/home/ann"), "/home/ann/models/a.dat");
+  EXPECT_EQ(PromptPath("~", "/home/ann"), "/home/ann");
+  EXPECT_EQ(PromptPath("~bob/a.dat", "/home/ann"), "~bob/a.dat");  // other users' homes: as typed
+  EXPECT_EQ(PromptPath("~/a.dat", ""), "~/a.dat");                 // no HOME: as typed
+  EXPECT_EQ(PromptPath("   ", "/home/ann"), "");
 }
 
 }  // namespace

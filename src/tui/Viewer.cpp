@@ -14,6 +14,7 @@
 #include "io/LoadError.h"
 #include "raster/Renderer.h"
 #include "tui/LineEditor.h"
+#include "tui/PromptPath.h"
 #include "tui/ScreenPainter.h"
 #include "tui/StatusLine.h"
 #include "tui/TerminalSession.h"
@@ -52,6 +53,11 @@ std::optional<NamedKey> NamedKeyFor(int key) {
     default:
       return std::nullopt;
   }
+}
+
+std::string HomeDirectory() {
+  const char* home = std::getenv("HOME");
+  return home != nullptr ? home : "";
 }
 
 class EventLoop {
@@ -152,9 +158,9 @@ class EventLoop {
       case '\n':
       case KEY_ENTER:
         prompting_ = false;
-        if (!editor_.Text().empty()) {
-          ShowBusy("loading " + SanitizeForTerminal(editor_.Text(), 4096));
-          state_.OpenPath(editor_.Text());
+        if (const std::string path = PromptPath(editor_.Text(), HomeDirectory()); !path.empty()) {
+          ShowBusy("loading " + SanitizeForTerminal(path, 4096));
+          state_.OpenPath(path);
         }
         break;
       case KEY_BACKSPACE:

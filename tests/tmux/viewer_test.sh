@@ -149,6 +149,21 @@ frame_matches_render opened_model_shown 24 "$src/data/cube.dat" --size 80x24
 tm send-keys -t v p
 wait_for 'demo' 5 >/dev/null && pass || fail "p did not go back to the demo"
 
+# 7a. Paths as people type or drop them: ~ is the home directory, and the
+# quotes a terminal puts around a dragged-in file are not part of the name.
+mkdir -p "$work/my models"
+cp "$src/data/wedge.dat" "$work/my models/wedge.dat"
+cp "$src/data/cube.dat" "$work/home_cube.dat"
+tm send-keys -t v o
+tm send-keys -t v -l "~/home_cube.dat"
+tm send-keys -t v Enter
+wait_for "opened .*home_cube\.dat" 5 >/dev/null && pass || fail "~ in a typed path not expanded"
+tm send-keys -t v o
+tm send-keys -t v -l " '$work/my models/wedge.dat' "
+tm send-keys -t v Enter
+wait_for "opened .*my models/wedge\.dat" 5 >/dev/null && pass || fail "quoted dropped path not opened"
+frame_matches_render dropped_path_opened 24 "$src/data/wedge.dat" --size 80x24
+
 # 7b. A big model (half a million vertices, about a second to load) shows
 # "loading" on the status line while it loads.
 python3 - "$work/big.dat" <<'PY'
