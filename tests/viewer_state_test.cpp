@@ -1,11 +1,15 @@
 // The viewer's state machine and status line, without a terminal.
 #include <gtest/gtest.h>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
 
 #include <numbers>
 
 #include "geometry/FitCamera.h"
 #include "support/TestSupport.h"
 #include "tui/LineEditor.h"
+#include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
 #include "tui/StatusLine.h"
 #include "tui/ViewerState.h"
@@ -196,6 +200,47 @@ TEST(PromptPath, TrimsUnquotesAndExpandsHome) {
   EXPECT_EQ(PromptPath("~bob/a.dat", "/home/ann"), "~bob/a.dat");  // other users' homes: as typed
   EXPECT_EQ(PromptPath("~/a.dat", ""), "~/a.dat");                 // no HOME: as typed
   EXPECT_EQ(PromptPath("   ", "/home/ann"), "");
+}
+
+// A scratch directory with a few models, removed afterwards.
+class PathCompletionTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("termshade-complete-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_ / "models");
+    for (const char* name : {"cube.dat", "cone.dat", "models/wedge.dat", ".hidden.dat"}) {
+      std::ofstream(dir_ / name) << "1 0 0 0\n";
+    }
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string Dir() const { return dir_.string(); }
+  std::filesystem::path dir_;
+};
+
+TEST_F(PathCompletionTest, ExtendsByWhatTheMatchesShare) {
+  EXPECT_EQ(CompletePath(Dir() + "/cu", "").text, Dir() + "/cube.dat");
+  EXPECT_EQ(CompletePath(Dir() + "/cu", "").matches, 1);
+  const PathCompletion two = CompletePath(Dir() + "/c", "");
+  EXPECT_EQ(two.text, Dir() + "/c");  // cube.dat and cone.dat share only the c
+  EXPECT_EQ(two.matches, 2);
+  EXPECT_EQ(CompletePath(Dir() + "/co", "").text, Dir() + "/cone.dat");
+  EXPECT_EQ(CompletePath(Dir() + "/mo", "").text, Dir() + "/models/");
+  EXPECT_EQ(CompletePath(Dir() + "/models/", "").text, Dir() + "/models/wedge.dat");
+  EXPECT_EQ(CompletePath(Dir() + "/x", "").matches, 0);
+  EXPECT_EQ(CompletePath(Dir() + "/nothing/x", "").matches, 0);
+}
+
+TEST_F(PathCompletionTest, HiddenNamesOnlyWhenAsked) {
+  EXPECT_EQ(CompletePath(Dir() + "/", "").matches, 3);  // cube, cone, models
+  EXPECT_EQ(CompletePath(Dir() + "/.h", "").text, Dir() + "/.hidden.dat");
+}
+
+TEST_F(PathCompletionTest, KeepsTheHomeAsTyped) {
+  EXPECT_EQ(CompletePath("~/cu", Dir()).text, "~/cube.dat");
+  std::string quoted(1, '\'');  // built by appending: GCC 12 warns (-Wrestrict) on "'" + string
+  quoted += Dir() + "/cu";
+  EXPECT_EQ(CompletePath(quoted, "").matches, 0);  // quoted: left alone
 }
 
 }  // namespace

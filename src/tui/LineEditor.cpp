@@ -82,4 +82,9 @@ void LineEditor::Clear() {
   pending_.clear();
 }
 
+void LineEditor::SetText(std::string_view utf8) {
+  Clear();
+  for (char c : utf8) InsertByte(static_cast<unsigned char>(c));
+}
+
 }  // namespace termshade

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace termshade {
 
@@ -20,6 +21,8 @@ class LineEditor {
   void Home() { cursor_ = 0; }
   void End() { cursor_ = text_.size(); }
   void Clear();
+  /// Replaces the text (UTF-8, as if typed), the cursor at its end.
+  void SetText(std::string_view utf8);
 
   /// The text as code points; Cursor() counts code points.
   const std::u32string& CodePoints() const { return text_; }

@@ -59,10 +59,10 @@ void ScreenPainter::PaintHelp(ScreenGrid& grid) const {
       "L                light mode: arrows move the sun",
       "space            turntable on / off",
       "a A              cell aspect - / +",
-      "o                open a model file",
+      "o                open a model file (Tab completes)",
       "n p              next / previous model",
       "?                this help",
-      "q  Ctrl-C        quit",
+      "q  Ctrl-C        quit (Ctrl-Z suspends)",
       "",
       "any key closes this help"};
   const int width = 50, height = static_cast<int>(kLines.size()) + 2;

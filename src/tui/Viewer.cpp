@@ -14,6 +14,7 @@
 #include "io/LoadError.h"
 #include "raster/Renderer.h"
 #include "tui/LineEditor.h"
+#include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
 #include "tui/ScreenPainter.h"
 #include "tui/StatusLine.h"
@@ -137,6 +138,7 @@ class EventLoop {
     if (action == ViewerAction::kOpenFile) {
       prompting_ = true;
       editor_.Clear();
+      completionMatches_ = 1;
     }
     if ((action == ViewerAction::kNextModel || action == ViewerAction::kPreviousModel) &&
         state_.ModelCount() > 1) {
@@ -150,6 +152,7 @@ class EventLoop {
   }
 
   void HandlePromptKey(int key) {
+    completionMatches_ = 1;
     switch (key) {
       case 27:
         prompting_ = false;
@@ -188,6 +191,13 @@ class EventLoop {
       case 21:
         editor_.Clear();
         break;
+      case '\t': {
+        const PathCompletion completion = CompletePath(editor_.Text(), HomeDirectory());
+        editor_.SetText(completion.text);
+        completionMatches_ = completion.matches;
+        dirty_ = true;
+        return;  // the hint stays until the next key
+      }
       case KEY_RESIZE:
         break;
       default:
@@ -247,7 +257,12 @@ class EventLoop {
     if (state_.HelpShown()) painter_.PaintHelp(grid_);
     std::optional<std::pair<int, int>> cursor;
     if (prompting_) {
-      cursor = painter_.PaintPrompt("open: ", editor_, grid_);
+      // After Tab: how many names matched, when not exactly one.
+      const std::string label = completionMatches_ == 1 ? "open: "
+                                : completionMatches_ == 0
+                                    ? "open (no match): "
+                                    : "open (" + std::to_string(completionMatches_) + " matches): ";
+      cursor = painter_.PaintPrompt(label, editor_, grid_);
     } else {
       // A terminal that would scroll on its bottom-right cell gets one cell less.
       const int statusCols = TerminalWriter::BottomRightWritable() ? cols : cols - 1;
@@ -297,6 +312,7 @@ class EventLoop {
   CellBuffer cells_;
   DepthBuffer depth_;
   LineEditor editor_;
+  int completionMatches_ = 1;  ///< names the last Tab matched (1: no hint)
   bool prompting_ = false;
   bool dirty_ = true;
   bool dragging_ = false;

@@ -164,6 +164,21 @@ tm send-keys -t v Enter
 wait_for "opened .*my models/wedge\.dat" 5 >/dev/null && pass || fail "quoted dropped path not opened"
 frame_matches_render dropped_path_opened 24 "$src/data/wedge.dat" --size 80x24
 
+# Tab completes a name as a shell does; several matches are counted.
+tm send-keys -t v o
+tm send-keys -t v -l "~/home_c"
+tm send-keys -t v Tab
+wait_for 'open: ~/home_cube\.dat' 5 >/dev/null && pass || fail "Tab did not complete the name"
+tm send-keys -t v C-u
+tm send-keys -t v -l "$work/my models/"
+tm send-keys -t v Tab
+wait_for 'open: .*my models/wedge\.dat' 5 >/dev/null && pass || fail "Tab did not complete in a directory"
+tm send-keys -t v C-u
+tm send-keys -t v -l "~/"
+tm send-keys -t v Tab
+wait_for 'open \([0-9]+ matches\): ~/' 5 >/dev/null && pass || fail "Tab did not count several matches"
+tm send-keys -t v Escape
+
 # 7b. A big model (half a million vertices, about a second to load) shows
 # "loading" on the status line while it loads.
 python3 - "$work/big.dat" <<'PY'
