@@ -224,12 +224,16 @@ class EventLoop {
     dirty_ = true;
   }
 
+  // A terminal that would scroll on its bottom-right cell gets one cell less.
+  static int StatusCols(int cols) {
+    return TerminalWriter::BottomRightWritable() ? cols : cols - 1;
+  }
+
   // Puts what over the status line at once: loading a big model takes a while.
   void ShowBusy(const std::string& what) {
     const int cols = grid_.WidthCells(), rows = grid_.HeightCells();
     if (cols < kMinCols || rows < kMinRows) return;
-    const int statusCols = TerminalWriter::BottomRightWritable() ? cols : cols - 1;
-    painter_.PaintStatus(ComposeStatusLine({{what, 0, false, Elision::kMiddle}}, statusCols),
+    painter_.PaintStatus(ComposeStatusLine({{what, 0, false, Elision::kMiddle}}, StatusCols(cols)),
                          grid_);
     writer_.Present(grid_, state_.Colour(), state_.Render().ramp.LevelCount(), std::nullopt);
   }
@@ -264,9 +268,7 @@ class EventLoop {
                                     : "open (" + std::to_string(completionMatches_) + " matches): ";
       cursor = painter_.PaintPrompt(label, editor_, grid_);
     } else {
-      // A terminal that would scroll on its bottom-right cell gets one cell less.
-      const int statusCols = TerminalWriter::BottomRightWritable() ? cols : cols - 1;
-      painter_.PaintStatus(StatusText(stats, frameMs, statusCols), grid_);
+      painter_.PaintStatus(StatusText(stats, frameMs, StatusCols(cols)), grid_);
     }
     writer_.Present(grid_, state_.Colour(), levelCount, cursor);
   }

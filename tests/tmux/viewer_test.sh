@@ -65,6 +65,13 @@ frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line =
 
 run() { tm send-keys -t v -l -- "$1"; tm send-keys -t v Enter; }
 
+# Types TEXT at the viewer's open prompt (o), then KEY (Enter unless given).
+at_prompt() {  # at_prompt TEXT [KEY]
+  tm send-keys -t v o
+  tm send-keys -t v -l -- "$1"
+  tm send-keys -t v "${2:-Enter}"
+}
+
 # Types an X10 mouse report (ESC [ M, then button, column, row, each + 32),
 # the bytes a terminal sends when ncurses has asked for mouse reports.
 mouse() {  # mouse BUTTON-CODE COL ROW (0-based cells)
@@ -134,16 +141,12 @@ wait_for 'theta 0\.30' 5 >/dev/null || fail "no frame after growing again"
 frame_matches_render recovers_after_too_small 24 "$src/data/sphere_cone.dat" --size 80x24
 
 # 6. A bad path typed at 'o' shows an error and keeps the model.
-tm send-keys -t v o
-tm send-keys -t v -l "$src/tests/models/bad/undefined_vertex.dat"
-tm send-keys -t v Enter
+at_prompt "$src/tests/models/bad/undefined_vertex.dat"
 wait_for 'undefined_vertex.dat:14:7: vertex 12 is not defined' 5 >/dev/null && pass || fail "open error not shown"
 frame_matches_render model_kept_after_bad_open 24 "$src/data/sphere_cone.dat" --size 80x24
 
 # 7. A good path typed at 'o' opens it; n and p step between models.
-tm send-keys -t v o
-tm send-keys -t v -l "$src/data/cube.dat"
-tm send-keys -t v Enter
+at_prompt "$src/data/cube.dat"
 wait_for 'opened' 5 >/dev/null || fail "open of a good file failed"
 frame_matches_render opened_model_shown 24 "$src/data/cube.dat" --size 80x24
 tm send-keys -t v p
@@ -154,20 +157,14 @@ wait_for 'demo' 5 >/dev/null && pass || fail "p did not go back to the demo"
 mkdir -p "$work/my models"
 cp "$src/data/wedge.dat" "$work/my models/wedge.dat"
 cp "$src/data/cube.dat" "$work/home_cube.dat"
-tm send-keys -t v o
-tm send-keys -t v -l "~/home_cube.dat"
-tm send-keys -t v Enter
+at_prompt "~/home_cube.dat"
 wait_for "opened .*home_cube\.dat" 5 >/dev/null && pass || fail "~ in a typed path not expanded"
-tm send-keys -t v o
-tm send-keys -t v -l " '$work/my models/wedge.dat' "
-tm send-keys -t v Enter
+at_prompt " '$work/my models/wedge.dat' "
 wait_for "opened .*my models/wedge\.dat" 5 >/dev/null && pass || fail "quoted dropped path not opened"
 frame_matches_render dropped_path_opened 24 "$src/data/wedge.dat" --size 80x24
 
 # Tab completes a name as a shell does; several matches are counted.
-tm send-keys -t v o
-tm send-keys -t v -l "~/home_c"
-tm send-keys -t v Tab
+at_prompt "~/home_c" Tab
 wait_for 'open: ~/home_cube\.dat' 5 >/dev/null && pass || fail "Tab did not complete the name"
 tm send-keys -t v C-u
 tm send-keys -t v -l "$work/my models/"
@@ -197,9 +194,7 @@ with open(sys.argv[1], "w") as out:
             out.write("%d %d %d %d.\n" % (i * n + j + 1, (i + 1) * n + j + 1, (i + 1) * n + k + 1,
                                            i * n + k + 1))
 PY
-tm send-keys -t v o
-tm send-keys -t v -l "$work/big.dat"
-tm send-keys -t v Enter
+at_prompt "$work/big.dat"
 wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message for a big model"
 wait_for 'opened .*big\.dat' 30 >/dev/null && pass || fail "the big model did not open"
 rm -f "$work/big.dat"
@@ -251,9 +246,7 @@ wait_for 'exit=1' 5 >/dev/null && pass || fail "bad model exit code"
 cp "$src/data/wedge.dat" "$work/$(printf 'evil\033[7mname').dat"
 run "clear; cd $work && $bin evil*name.dat"
 wait_for 'evil\\x1B\[7mname' 5 >/dev/null || fail "escape in the model name not shown escaped"
-tm send-keys -t v o
-tm send-keys -t v -l "nothing-here.dat"
-tm send-keys -t v Enter
+at_prompt "nothing-here.dat"
 wait_for 'nothing-here.dat: cannot open' 5 >/dev/null && pass || fail "missing file at o"
 tm send-keys -t v '?'
 wait_for 'termshade keys' 5 >/dev/null && pass || fail "help overlay"
