@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/Rgb.h"
+#include "geometry/UpAxis.h"
 #include "geometry/Vec3.h"
 
 namespace termshade {
@@ -22,6 +24,11 @@ struct Mesh {
   std::vector<uint8_t> edgeHidden;
   /// Two-vertex entries of the file: line segments (drawn in wire mode only).
   std::vector<std::array<uint32_t, 2>> segments;
+  /// Per face, the colour the file gives (material diffuse, or vertex colours
+  /// averaged over the face); empty when the file gives none (SPEC 10).
+  std::vector<Rgb> faceColors;
+  /// The file's up axis: what the file declares, else its format's convention (SPEC 10).
+  UpAxis upAxisFile = UpAxis::kPlusZ;
 
   size_t FaceCount() const { return faceStarts.size() - 1; }
   std::span<const uint32_t> Face(size_t face) const {

@@ -92,7 +92,7 @@ bool UsesImporter(const std::string& path) {
   return importer.IsExtensionSupported(ext);
 }
 
-Loaded<Mesh> LoadModelFile(const std::string& path) {
+Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& /*options*/) {
   Loaded<std::string> bytes = ReadWholeFile(path);
   if (!bytes.Ok()) return bytes.Error();
   if (UsesImporter(path)) return ImportWithAssimp(path, bytes.Value());
