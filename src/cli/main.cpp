@@ -7,6 +7,7 @@
 #include <iostream>
 #include <regex>
 
+#include "LoadBench.h"
 #include "MethodsBench.h"
 #include "TerminalBench.h"
 #include "cli/GenerateCommand.h"
@@ -40,6 +41,14 @@ int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
   }
   done = false;
   return 0;
+}
+
+// This program's own file, for benches that run it in a child process.
+std::string SelfPath() {
+  char path[4096];
+  const ssize_t length = readlink("/proc/self/exe", path, sizeof path - 1);
+  if (length <= 0) return "/proc/self/exe";
+  return {path, static_cast<size_t>(length)};
 }
 
 void AddSizeOption(CLI::App& command, RenderCommandOptions& options) {
@@ -142,12 +151,19 @@ int Run(int argc, char** argv) {
                             "turntable: theta step between frames, radians (default 0.1)");
 
   // Scene files: termshade generate NAME [-o FILE]
-  std::string sceneName, generateOutput;
-  CLI::App* generateCommand =
-      app.add_subcommand("generate", "write a shipped scene (data/*.dat) from its generator");
-  generateCommand->add_option("scene", sceneName, "scene name, or 'all' (with -o DIRECTORY)")
+  termshade::GenerateCommandOptions generate;
+  CLI::App* generateCommand = app.add_subcommand(
+      "generate", "write a shipped scene (data/*.dat) from its generator, or a test sphere");
+  generateCommand
+      ->add_option("scene", generate.name,
+                   "scene name, 'all' (with -o DIRECTORY), or 'sphere' (see --triangles)")
       ->required();
-  generateCommand->add_option("-o,--output", generateOutput, "file (or directory for 'all')");
+  generateCommand->add_option(
+      "-o,--output", generate.outputPath,
+      "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')");
+  generateCommand
+      ->add_option("--triangles", generate.triangles, "sphere: about N triangles (default 200000)")
+      ->check(CLI::Range(size_t{8}, size_t{50000000}));
 
   // Measurements: termshade bench terminal [options]
   CLI::App* benchCommand = app.add_subcommand("bench", "measure the program (see README)");
@@ -189,18 +205,31 @@ int Run(int argc, char** argv) {
   methodsCommand->add_option("--data", methodsBench.dataDirectory,
                              "the scenes' directory (default data)");
 
+  termshade::LoadBenchOptions loadBench;
+  CLI::App* loadCommand = benchCommand->add_subcommand(
+      "load", "load time, peak memory and frame time of generated big models (OBJ, STL, PLY)");
+  loadCommand->add_option("--triangles", loadBench.triangleCounts,
+                          "model sizes in triangles (default 200000 2000000)");
+  loadCommand->add_option("--formats", loadBench.formats, "obj, stl, ply (default all three)")
+      ->check(CLI::IsMember({"obj", "stl", "ply"}));
+  loadCommand->add_option("--repeats", loadBench.repeats, "runs per model (default 3)")
+      ->check(CLI::Range(1, 100));
+  loadCommand->add_option("--dir", loadBench.directory,
+                          "folder for the generated models (default: a temporary folder)");
+
   bool done = false;
   const int parseCode = ParseOrExit(app, argc, argv, done);
   if (done) return parseCode;
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
-  if (generateCommand->parsed()) return termshade::RunGenerateCommand(sceneName, generateOutput);
+  if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
   if (terminalCommand->parsed()) {
-    terminalBench.viewerPath = "/proc/self/exe";
-    char path[4096];
-    const ssize_t length = readlink("/proc/self/exe", path, sizeof path - 1);
-    if (length > 0) terminalBench.viewerPath.assign(path, static_cast<size_t>(length));
+    terminalBench.viewerPath = SelfPath();
     return termshade::RunTerminalBench(terminalBench);
+  }
+  if (loadCommand->parsed()) {
+    loadBench.executablePath = SelfPath();
+    return termshade::RunLoadBench(loadBench);
   }
   return RunViewerFrom(viewerLook, models, viewerAspect, mono);
 }

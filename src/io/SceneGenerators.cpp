@@ -1,5 +1,6 @@
 #include "io/SceneGenerators.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -223,6 +224,29 @@ Mesh GenerateSphere(int latitudeBands, int longitudeBands) {
   Mesh mesh;
   AddSphere(mesh, {}, 1.0, latitudeBands, longitudeBands);
   mesh.name = "sphere";
+  return mesh;
+}
+
+Mesh GenerateTriangleSphere(size_t triangleCount) {
+  // A UV sphere with L latitude and M longitude bands has 2 M (L - 1) triangles
+  // once its quads are split; L = M / 2 keeps the quads near square.
+  const auto longitude =
+      std::max(4, static_cast<int>(std::lround(std::sqrt(static_cast<double>(triangleCount)))));
+  const int latitude = std::max(
+      2, static_cast<int>(std::lround(static_cast<double>(triangleCount) / (2.0 * longitude))) + 1);
+  const Mesh bands = GenerateSphere(latitude, longitude);
+  Mesh mesh;
+  mesh.name = "sphere";
+  mesh.verticesFile = bands.verticesFile;
+  mesh.faceCorners.reserve(bands.faceCorners.size() * 3 / 2);
+  mesh.faceStarts.reserve(2 * bands.FaceCount() + 1);
+  mesh.edgeHidden.reserve(bands.faceCorners.size() * 3 / 2);
+  for (size_t f = 0; f < bands.FaceCount(); ++f) {
+    const auto corners = bands.Face(f);
+    for (size_t i = 1; i + 1 < corners.size(); ++i) {
+      mesh.AddFace(std::array<uint32_t, 3>{corners[0], corners[i], corners[i + 1]});
+    }
+  }
   return mesh;
 }
 

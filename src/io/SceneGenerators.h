@@ -19,4 +19,8 @@ std::optional<Mesh> GenerateScene(std::string_view name);
 /// (for benchmarks: 200,000 triangles is 317 x 316 bands).
 Mesh GenerateSphere(int latitudeBands, int longitudeBands);
 
+/// A UV sphere of radius 1 made of about `triangleCount` triangles (within
+/// one longitude band), for load and frame benchmarks at any size.
+Mesh GenerateTriangleSphere(size_t triangleCount);
+
 }  // namespace termshade

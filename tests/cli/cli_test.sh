@@ -59,6 +59,19 @@ check auto_method 0 "" -- "$bin" render "$src/data/cube.dat" --method auto --for
 expect auto_reports_itself grep -q '"method": "auto"' "$work/out"
 check generate 0 "" -- "$bin" generate wedge
 expect generate_matches_data cmp -s "$work/out" "$src/data/wedge.dat"
+# Exported formats: a sphere written as .dat and as binary STL (both z-up) draws the same frame.
+for format in dat obj stl ply; do
+  check "generate_sphere_$format" 0 "" -- "$bin" generate sphere --triangles 2000 -o "$work/sphere.$format"
+done
+"$bin" render "$work/sphere.dat" --size 40x16 >"$work/sphere-dat.txt"
+"$bin" render "$work/sphere.stl" --size 40x16 >"$work/sphere-stl.txt"
+expect stl_export_draws_as_dat cmp -s "$work/sphere-dat.txt" "$work/sphere-stl.txt"
+check render_obj_export 0 "" -- "$bin" render "$work/sphere.obj" --size 40x16
+check render_ply_export 0 "" -- "$bin" render "$work/sphere.ply" --size 40x16
+expect sphere_triangle_count test "$(grep -c '^f ' "$work/sphere.obj")" -ge 1900
+check generate_unknown_extension 2 "extension" -- "$bin" generate sphere -o "$work/sphere.xyz"
+check bench_load 0 "" -- "$bin" bench load --triangles 2000 --formats stl --repeats 1 --dir "$work/bench"
+expect bench_load_reports_a_row grep -q '^| 2k triangles, stl |' "$work/out"
 check obj_import 0 "" -- "$bin" render "$src/tests/models/good/quad_and_triangle.obj" --size 20x8
 
 # Bad input: exit 1 with file:line:col.
