@@ -1,0 +1,24 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "geometry/Mesh.h"
+#include "io/LoadError.h"
+
+namespace termshade {
+
+/// True when the bytes have the exact layout of a binary STL: an 80-byte
+/// header, a little-endian uint32 triangle count n, then n records of 50 bytes.
+bool IsBinaryStlLayout(std::string_view bytes);
+
+/// True when the header asks for per-face colours (Materialise "COLOR="),
+/// which the importer decodes; the fast reader leaves such files to it.
+bool BinaryStlHasColours(std::string_view bytes);
+
+/// Reads a binary STL of that layout into one face per triangle, in file
+/// order. Exactly equal positions become one vertex (meshoptimizer's remap,
+/// first occurrence first), so shared edges are shared in the mesh.
+Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path);
+
+}  // namespace termshade

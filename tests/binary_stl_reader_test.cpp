@@ -1,0 +1,76 @@
+#include "io/BinaryStlReader.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstring>
+
+#include "io/MeshExport.h"
+#include "io/SceneGenerators.h"
+
+namespace termshade {
+namespace {
+
+// Compared as floats: GCC 12 at -O3 folds a vectorised double -> float -> double round trip.
+std::array<float, 3> AsFloats(Vec3 p) {
+  return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
+}
+
+TEST(BinaryStlReader, WeldsASphereBackToItsSharedVertices) {
+  const Mesh sphere = GenerateTriangleSphere(2000);
+  const std::string bytes = ExportMesh(sphere, ExportFormat::kStl);
+  ASSERT_TRUE(IsBinaryStlLayout(bytes));
+  Loaded<Mesh> read = ReadBinaryStl(bytes, "sphere.stl");
+  ASSERT_TRUE(read.Ok()) << read.Error().ToString();
+  const Mesh& mesh = read.Value();
+  EXPECT_EQ(mesh.verticesFile.size(), sphere.verticesFile.size());
+  ASSERT_EQ(mesh.FaceCount(), sphere.FaceCount());
+  for (size_t f = 0; f < mesh.FaceCount(); ++f) {
+    ASSERT_EQ(mesh.Face(f).size(), 3U);
+    for (size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(AsFloats(mesh.verticesFile[mesh.Face(f)[i]]),
+                AsFloats(sphere.verticesFile[sphere.Face(f)[i]]))
+          << "face " << f << " corner " << i;
+    }
+  }
+}
+
+TEST(BinaryStlReader, NumbersVerticesInFirstOccurrenceOrder) {
+  const Mesh sphere = GenerateTriangleSphere(200);
+  Loaded<Mesh> read = ReadBinaryStl(ExportMesh(sphere, ExportFormat::kStl), "sphere.stl");
+  ASSERT_TRUE(read.Ok());
+  uint32_t nextNew = 0;
+  for (const uint32_t corner : read.Value().faceCorners) {
+    ASSERT_LE(corner, nextNew);
+    if (corner == nextNew) ++nextNew;
+  }
+}
+
+TEST(BinaryStlReader, RefusesAnythingButTheExactLayout) {
+  std::string bytes = ExportMesh(GenerateTriangleSphere(200), ExportFormat::kStl);
+  EXPECT_FALSE(IsBinaryStlLayout(bytes.substr(0, bytes.size() - 1)));
+  EXPECT_FALSE(IsBinaryStlLayout(bytes + "x"));
+  EXPECT_FALSE(IsBinaryStlLayout("solid x\nendsolid x\n"));
+  const uint32_t huge = 0xFFFFFFFFU;  // a count the file cannot hold
+  std::memcpy(bytes.data() + 80, &huge, sizeof huge);
+  EXPECT_FALSE(IsBinaryStlLayout(bytes));
+  Loaded<Mesh> read = ReadBinaryStl(bytes, "lying.stl");
+  ASSERT_FALSE(read.Ok());
+  EXPECT_NE(read.Error().ToString().find("lying.stl"), std::string::npos);
+}
+
+TEST(BinaryStlReader, AnEmptyFileIsAnError) {
+  const std::string bytes(84, '\0');
+  ASSERT_TRUE(IsBinaryStlLayout(bytes));
+  EXPECT_FALSE(ReadBinaryStl(bytes, "empty.stl").Ok());
+}
+
+TEST(BinaryStlReader, SeesMaterialiseColourHeaders) {
+  std::string bytes = ExportMesh(GenerateTriangleSphere(200), ExportFormat::kStl);
+  EXPECT_FALSE(BinaryStlHasColours(bytes));
+  bytes.replace(0, 10, "COLOR=\xff\x00\x00\xff");
+  EXPECT_TRUE(BinaryStlHasColours(bytes));
+}
+
+}  // namespace
+}  // namespace termshade
