@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "geometry/Mesh.h"
+#include "io/LoadError.h"
+
+namespace termshade {
+
+/// Reads a PLY file (ascii, binary little- or big-endian) straight into a
+/// mesh that keeps the file's own vertex indexing: vertex x, y, z of any
+/// numeric type and the face element's vertex index lists, in file order;
+/// other elements and properties are skipped. Counts are checked against the
+/// file's size before anything is allocated; an index out of range is an
+/// error. nullopt when the file carries what the importer decodes and this
+/// reader does not (vertex or face colours, triangle strips), so the caller
+/// hands it to Assimp.
+/// A file whose mesh would need more than memoryBudgetBytes is refused with
+/// a message saying how much it needs.
+std::optional<Loaded<Mesh>> ReadPly(std::string_view bytes, const std::string& path,
+                                    size_t memoryBudgetBytes);
+
+}  // namespace termshade

@@ -1,0 +1,160 @@
+#include "io/PlyReader.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "geometry/FitCamera.h"
+#include "io/FrameFormats.h"
+#include "io/MeshExport.h"
+#include "io/ModelLoader.h"
+#include "io/SceneGenerators.h"
+#include "raster/Renderer.h"
+
+namespace termshade {
+namespace {
+
+constexpr size_t kBudget = size_t{1} << 30;
+
+std::array<float, 3> AsFloats(Vec3 p) {
+  return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
+}
+
+Mesh ReadOk(const std::string& bytes) {
+  auto read = ReadPly(bytes, "model.ply", kBudget);
+  EXPECT_TRUE(read.has_value());
+  if (!read) return {};
+  EXPECT_TRUE(read->Ok()) << read->Error().ToString();
+  return read->Ok() ? read->Value() : Mesh{};
+}
+
+std::string ErrorOf(const std::string& bytes) {
+  auto read = ReadPly(bytes, "bad.ply", kBudget);
+  if (!read) return "(left to the importer)";
+  if (read->Ok()) return "(read)";
+  return read->Error().ToString();
+}
+
+constexpr const char* kAsciiSquare =
+    "ply\nformat ascii 1.0\ncomment a unit square and a line\nelement vertex 4\n"
+    "property float x\nproperty float y\nproperty float z\nproperty float confidence\n"
+    "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0 1\n1 0 0 1\n1 1 0 1\n0 1 0 1\n4 0 1 2 3\n2 3 0\n";
+
+TEST(PlyReader, KeepsABinarySpheresOwnIndexing) {
+  const Mesh sphere = GenerateTriangleSphere(2000);
+  const Mesh mesh = ReadOk(ExportMesh(sphere, ExportFormat::kPly));
+  ASSERT_EQ(mesh.verticesFile.size(), sphere.verticesFile.size());
+  EXPECT_EQ(mesh.faceCorners, sphere.faceCorners);
+  EXPECT_EQ(mesh.faceStarts, sphere.faceStarts);
+  for (size_t v = 0; v < mesh.verticesFile.size(); ++v) {
+    ASSERT_EQ(AsFloats(mesh.verticesFile[v]), AsFloats(sphere.verticesFile[v])) << v;
+  }
+}
+
+TEST(PlyReader, ReadsAsciiPolygonsSegmentsAndSkipsOtherProperties) {
+  const Mesh mesh = ReadOk(kAsciiSquare);
+  ASSERT_EQ(mesh.FaceCount(), 1U);
+  EXPECT_EQ(mesh.Face(0).size(), 4U);
+  ASSERT_EQ(mesh.segments.size(), 1U);
+  EXPECT_EQ(mesh.segments[0], (std::array<uint32_t, 2>{3, 0}));
+  EXPECT_EQ(mesh.verticesFile[2], (Vec3{1, 1, 0}));
+}
+
+TEST(PlyReader, ReadsBigEndian) {
+  std::string bytes =
+      "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty double x\n"
+      "property double y\nproperty double z\nelement face 1\n"
+      "property list uchar uint vertex_indices\nend_header\n";
+  auto appendBigEndian = [&bytes](auto value) {
+    char raw[sizeof value];
+    std::memcpy(raw, &value, sizeof value);
+    for (size_t i = sizeof value; i-- > 0;) bytes += raw[i];
+  };
+  for (const double coordinate : {0.0, 0.0, 0.5, 2.0, 0.0, 0.5, 0.0, 3.0, 0.5}) {
+    appendBigEndian(coordinate);
+  }
+  bytes += '\x03';
+  for (const uint32_t index : {0U, 1U, 2U}) appendBigEndian(index);
+  const Mesh mesh = ReadOk(bytes);
+  ASSERT_EQ(mesh.FaceCount(), 1U);
+  EXPECT_EQ(mesh.verticesFile[1], (Vec3{2, 0, 0.5}));
+  EXPECT_EQ(mesh.verticesFile[2], (Vec3{0, 3, 0.5}));
+}
+
+TEST(PlyReader, LocatesHeaderProblems) {
+  EXPECT_EQ(ErrorOf("plx\n"), "bad.ply:1:1: expected 'ply' on the first line");
+  EXPECT_EQ(ErrorOf("ply\nformat ascii 1.0\nelement vertex 3\nproperty wide x\n"),
+            "bad.ply:4:1: unknown property type");
+  EXPECT_NE(ErrorOf("ply\nformat ascii 1.0\nelement vertex 3\n").find("end_header"),
+            std::string::npos);
+}
+
+TEST(PlyReader, ChecksCountsAgainstTheFileBeforeAllocating) {
+  const std::string claim =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
+  EXPECT_NE(ErrorOf(claim + std::string(100, '\0')).find("more than the file can hold"),
+            std::string::npos);
+}
+
+TEST(PlyReader, RefusesAModelOverTheMemoryBudget) {
+  const std::string bytes = ExportMesh(GenerateTriangleSphere(2000), ExportFormat::kPly);
+  auto read = ReadPly(bytes, "big.ply", 1000);
+  ASSERT_TRUE(read && !read->Ok());
+  EXPECT_NE(read->Error().message.find("more than the memory budget"), std::string::npos);
+}
+
+TEST(PlyReader, RefusesIndicesOutOfRangeOrNegative) {
+  std::string outOfRange = kAsciiSquare;
+  outOfRange.replace(outOfRange.find("4 0 1 2 3"), 9, "4 0 1 2 9");
+  EXPECT_NE(ErrorOf(outOfRange).find("names vertex 9 (the file has 4 vertices)"),
+            std::string::npos);
+  std::string negative = kAsciiSquare;
+  negative.replace(negative.find("4 0 1 2 3"), 9, "4 0 1 -2 3");
+  EXPECT_NE(ErrorOf(negative).find("names vertex -2"), std::string::npos);
+  EXPECT_EQ(ErrorOf(outOfRange).rfind("bad.ply:16:", 0), 0U) << ErrorOf(outOfRange);
+}
+
+TEST(PlyReader, ATruncatedFileIsAnError) {
+  const std::string bytes = ExportMesh(GenerateTriangleSphere(200), ExportFormat::kPly);
+  EXPECT_NE(ErrorOf(bytes.substr(0, bytes.size() - 7)).find("bad.ply"), std::string::npos);
+  EXPECT_NE(ErrorOf(bytes.substr(0, bytes.size() - 7)), "(read)");
+}
+
+TEST(PlyReader, LeavesColouredFilesToTheImporter) {
+  std::string coloured = kAsciiSquare;
+  coloured.replace(coloured.find("property float confidence"), 25, "property uchar red");
+  EXPECT_EQ(ErrorOf(coloured), "(left to the importer)");
+}
+
+// The reference: Assimp's reading of the same file draws the same frame.
+TEST(PlyReader, DrawsWhatTheImporterDraws) {
+  const std::string path = ::testing::TempDir() + "ply_reader_parity.ply";
+  const std::string bytes = ExportMesh(GenerateScene("sphere_cone").value(), ExportFormat::kPly);
+  std::ofstream(path, std::ios::binary) << bytes;
+  auto frameOf = [](Mesh mesh) {
+    mesh.upAxisFile = UpAxis::kPlusZ;
+    const Scene scene = PrepareScene(std::move(mesh));
+    const Camera camera = FitCamera(scene, DefaultView(scene.diagonalModelUnits), 80, 24, 2.0);
+    Renderer renderer;
+    DepthBuffer depth;
+    depth.Resize(80, 24);
+    CellBuffer cells(80, 24);
+    renderer.Render(scene, camera, RenderOptions{}, depth, cells);
+    std::string text;
+    AppendTextFrame(cells, text);
+    return text;
+  };
+  Loaded<Mesh> imported = LoadModelFile(path);
+  ASSERT_TRUE(imported.Ok()) << imported.Error().ToString();
+  EXPECT_EQ(frameOf(ReadOk(bytes)), frameOf(imported.Value()));
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace termshade
