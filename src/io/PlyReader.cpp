@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/DropUnusedVertices.h"
+
 namespace termshade {
 namespace {
 
@@ -457,6 +459,7 @@ std::optional<Loaded<Mesh>> ReadPly(std::string_view bytes, const std::string& p
   if (reader.mesh.FaceCount() == 0) {
     return Loaded<Mesh>(LoadError{path, 0, 0, "the file holds no polygons"});
   }
+  DropUnusedVertices(reader.mesh);
   return Loaded<Mesh>(std::move(reader.mesh));
 }
 

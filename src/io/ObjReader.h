@@ -1,0 +1,25 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "geometry/Mesh.h"
+#include "io/LoadError.h"
+
+namespace termshade {
+
+/// Reads a Wavefront OBJ's geometry straight into a mesh that keeps the
+/// file's own vertex indexing: `v` positions and `f` polygons (v, v/vt,
+/// v//vn, v/vt/vn, negative indices counting back), `l` two-corner lines as
+/// segments; texture coordinates, normals, groups and smoothing are skipped.
+/// Errors are located (file:line:column). The vertex and face counts are
+/// taken in a first pass and checked against memoryBudgetBytes before
+/// anything is allocated. nullopt when the file uses what the importer
+/// decodes and this reader does not (materials, vertex colours, free-form
+/// curves), so the caller hands it to Assimp.
+std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
+                                    size_t memoryBudgetBytes);
+
+}  // namespace termshade
