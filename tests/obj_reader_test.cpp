@@ -65,6 +65,7 @@ TEST(ObjReader, LeavesMaterialsAndColoursToTheImporter) {
   EXPECT_EQ(ErrorOf("mtllib a.mtl\nv 0 0 0\n"), "(left to the importer)");
   EXPECT_EQ(ErrorOf("v 0 0 0\nusemtl red\n"), "(left to the importer)");
   EXPECT_EQ(ErrorOf("v 0 0 0 1 0 0\n"), "(left to the importer)");
+  EXPECT_EQ(ErrorOf("v 0 0 \\\n0\n"), "(left to the importer)");
 }
 
 TEST(ObjReader, RefusesAModelOverTheMemoryBudget) {

@@ -68,17 +68,16 @@ ObjCounts CountObj(std::string_view text) {
   ObjCounts counts;
   ForEachLine(text, [&counts](const Line& line) {
     const std::string_view keyword = Keyword(line.text);
-    if (keyword == "v") {
+    const bool continued = !line.text.empty() && line.text.back() == '\\';
+    if (continued || keyword == "mtllib" || keyword == "usemtl" || keyword == "curv" ||
+        keyword == "surf" || keyword == "cstype" || keyword == "curv2") {
+      counts.needsImporter = true;
+    } else if (keyword == "v") {
       ++counts.vertices;
       if (CountWords(line.text) > 5) counts.needsImporter = true;  // x y z r g b: colours
     } else if (keyword == "f" || keyword == "fo" || keyword == "l") {
       ++counts.faces;
       counts.corners += CountWords(line.text) - 1;
-    } else if (keyword == "mtllib" || keyword == "usemtl" || keyword == "curv" ||
-               keyword == "surf" || keyword == "cstype" || keyword == "curv2") {
-      counts.needsImporter = true;
-    } else if (!line.text.empty() && line.text.back() == '\\') {
-      counts.needsImporter = true;  // continued lines
     }
     return !counts.needsImporter;
   });
