@@ -11,6 +11,7 @@
 #include "MethodsBench.h"
 #include "TerminalBench.h"
 #include "cli/GenerateCommand.h"
+#include "cli/HelpText.h"
 #include "cli/RenderCommand.h"
 #include "tui/Viewer.h"
 
@@ -35,7 +36,11 @@ int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
     done = true;
     return 0;
   } catch (const CLI::ParseError& e) {
-    std::cerr << "termshade: " << e.what() << "\nRun 'termshade --help' for the options.\n";
+    std::cerr << "termshade: " << e.what() << "\n";
+    if (const std::string hint = termshade::NearestOptionHint(app); !hint.empty()) {
+      std::cerr << "termshade: " << hint << "\n";
+    }
+    std::cerr << "Run 'termshade --help' for the options.\n";
     done = true;
     return 2;
   }
@@ -119,9 +124,10 @@ int Run(int argc, char** argv) {
   CLI::App app{
       "termshade: shaded 3D polygon models in a terminal.\n"
       "With no command, opens the interactive viewer on MODEL files (the demo scene if none);\n"
-      "press ? in the viewer for its keys."};
-  app.set_help_all_flag("--help-all", "all commands' options");
-  app.set_version_flag("--version", std::string("termshade ") + TERMSHADE_VERSION);
+      "press ? in the viewer for its keys.",
+      "termshade"};
+  std::string generateWhat;
+  termshade::SetUpHelp(app, TERMSHADE_VERSION, generateWhat);
   app.require_subcommand(0, 1);
 
   // The viewer: termshade [MODEL...]
@@ -129,7 +135,8 @@ int Run(int argc, char** argv) {
   std::vector<std::string> models;
   double viewerAspect = 0.0;
   bool mono = false;
-  app.add_option("models", models, "model files (.dat, or .obj .stl .ply .off ... via Assimp)");
+  app.add_option("models", models, "model files (.dat, or .obj .stl .ply .off ... via Assimp)")
+      ->type_name("MODEL");
   app.add_option("--cell-aspect", viewerAspect,
                  "cell height / cell width (default: from the terminal, else 2.0)")
       ->check(CLI::Range(0.25, 8.0));
@@ -139,12 +146,13 @@ int Run(int argc, char** argv) {
   // Headless frames: termshade render MODEL [options]
   RenderCommandOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "render frames to stdout or a file");
-  renderCommand->add_option("model", render.modelPath, "model file")->required();
+  renderCommand->add_option("model", render.modelPath, "model file")->required()->type_name("MODEL");
   AddViewOptions(*renderCommand, render);
   AddLookOptions(*renderCommand, render);
   renderCommand->add_option("--format", render.format, "text (default), ansi or json")
       ->check(CLI::IsMember({"text", "ansi", "json"}));
-  renderCommand->add_option("-o,--output", render.outputPath, "write to FILE instead of stdout");
+  renderCommand->add_option("-o,--output", render.outputPath, "write to FILE instead of stdout")
+      ->type_name("FILE");
   renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
       ->check(CLI::Range(1, 100000));
   renderCommand->add_option("--step", render.stepRadians,
@@ -158,9 +166,10 @@ int Run(int argc, char** argv) {
       ->add_option("scene", generate.name,
                    "scene name, 'all' (with -o DIRECTORY), or 'sphere' (see --triangles)")
       ->required();
-  generateCommand->add_option(
-      "-o,--output", generate.outputPath,
-      "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')");
+  generateCommand
+      ->add_option("-o,--output", generate.outputPath,
+                   "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')")
+      ->type_name("FILE");
   generateCommand
       ->add_option("--triangles", generate.triangles, "sphere: about N triangles (default 200000)")
       ->check(CLI::Range(size_t{8}, size_t{50000000}));
@@ -172,8 +181,9 @@ int Run(int argc, char** argv) {
   CLI::App* terminalCommand = benchCommand->add_subcommand(
       "terminal",
       "bytes and write() calls the viewer sends per frame, idle CPU (runs it in a pty)");
-  terminalCommand->add_option("model", terminalBench.modelPath,
-                              "model file (default: the demo scene)");
+  terminalCommand
+      ->add_option("model", terminalBench.modelPath, "model file (default: the demo scene)")
+      ->type_name("MODEL");
   terminalCommand->add_option("--cols", terminalBench.widthCells, "terminal width (default 160)")
       ->check(CLI::Range(20, 1000));
   terminalCommand->add_option("--rows", terminalBench.heightCells, "terminal height (default 48)")
@@ -198,12 +208,15 @@ int Run(int argc, char** argv) {
       ->add_option("--seconds", methodsBench.secondsPerCase,
                    "timing budget per method and scene (default 0.3)")
       ->check(CLI::Range(0.01, 60.0));
-  methodsCommand->add_option("--csv", methodsBench.csvPath,
-                             "CSV output (default bench-methods.csv)");
-  methodsCommand->add_option("--svg", methodsBench.svgPath,
-                             "plot output (default bench-methods.svg)");
-  methodsCommand->add_option("--data", methodsBench.dataDirectory,
-                             "the scenes' directory (default data)");
+  methodsCommand
+      ->add_option("--csv", methodsBench.csvPath, "CSV output (default bench-methods.csv)")
+      ->type_name("FILE");
+  methodsCommand
+      ->add_option("--svg", methodsBench.svgPath, "plot output (default bench-methods.svg)")
+      ->type_name("FILE");
+  methodsCommand
+      ->add_option("--data", methodsBench.dataDirectory, "the scenes' directory (default data)")
+      ->type_name("DIR");
 
   termshade::LoadBenchOptions loadBench;
   CLI::App* loadCommand = benchCommand->add_subcommand(
@@ -214,12 +227,16 @@ int Run(int argc, char** argv) {
       ->check(CLI::IsMember({"obj", "stl", "ply"}));
   loadCommand->add_option("--repeats", loadBench.repeats, "runs per model (default 3)")
       ->check(CLI::Range(1, 100));
-  loadCommand->add_option("--dir", loadBench.directory,
-                          "folder for the generated models (default: a temporary folder)");
+  loadCommand
+      ->add_option("--dir", loadBench.directory,
+                   "folder for the generated models (default: a temporary folder)")
+      ->type_name("DIR");
 
+  termshade::AddExamples(app);
   bool done = false;
   const int parseCode = ParseOrExit(app, argc, argv, done);
   if (done) return parseCode;
+  if (!generateWhat.empty()) return termshade::RunGenerate(app, TERMSHADE_VERSION, generateWhat);
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);

@@ -1,9 +1,11 @@
 #include "tui/ScreenPainter.h"
 
 #include <algorithm>
-#include <array>
+#include <sstream>
+#include <vector>
 
 #include "io/LoadError.h"
+#include "tui/ViewerKeys.h"
 
 namespace termshade {
 
@@ -43,35 +45,19 @@ std::pair<int, int> ScreenPainter::PaintPrompt(const std::string& label, const L
 }
 
 void ScreenPainter::PaintHelp(ScreenGrid& grid) const {
-  static constexpr std::array<const char*, 21> kLines{
-      "termshade keys",
-      "",
-      "arrows, h j k l  orbit (0.1 rad a press)",
-      "+ - PgUp PgDn    closer / farther (x0.5 / x2)",
-      "Insert Delete    closer / farther",
-      "mouse            drag orbits, wheel: distance",
-      "r                reset the view",
-      "f                refit the model to the window",
-      "m                method: zbuffer painter cull wire auto",
-      "s                shading: contrast / lambert",
-      "b                back faces: culled / drawn",
-      "c                colour on / off",
-      "L                light mode: arrows move the sun",
-      "space            turntable on / off",
-      "a A              cell aspect - / +",
-      "o                open a model file (Tab completes)",
-      "n p              next / previous model",
-      "?                this help",
-      "q  Ctrl-C        quit (Ctrl-Z suspends)",
-      "",
-      "any key closes this help"};
-  const int width = 50, height = static_cast<int>(kLines.size()) + 2;
+  std::vector<std::string> lines{"termshade keys", ""};
+  std::istringstream table(FormatViewerKeys(""));
+  for (std::string line; std::getline(table, line);) lines.push_back(line);
+  lines.insert(lines.end(), {"", "any key closes this help"});
+  size_t longest = 0;
+  for (const std::string& line : lines) longest = std::max(longest, line.size());
+  const int width = static_cast<int>(longest) + 4, height = static_cast<int>(lines.size()) + 2;
   const int top = std::max(0, (grid.HeightCells() - 1 - height) / 2);
   const int left = std::max(0, (grid.WidthCells() - width) / 2);
   for (int i = 0; i < height && top + i < grid.HeightCells() - 1; ++i) {
     grid.Put(left, top + i, std::string(static_cast<size_t>(width), ' '), CellStyle::kReverse);
-    if (i >= 1 && i <= static_cast<int>(kLines.size())) {
-      grid.Put(left + 2, top + i, kLines[static_cast<size_t>(i - 1)], CellStyle::kReverse);
+    if (i >= 1 && i <= static_cast<int>(lines.size())) {
+      grid.Put(left + 2, top + i, lines[static_cast<size_t>(i - 1)], CellStyle::kReverse);
     }
   }
 }

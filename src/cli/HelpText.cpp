@@ -1,0 +1,151 @@
+#include "cli/HelpText.h"
+
+#include <algorithm>
+#include <iostream>
+#include <vector>
+
+#include "cli/CommandModel.h"
+#include "cli/Completions.h"
+#include "cli/ManPage.h"
+#include "io/ModelExtensions.h"
+#include "tui/ViewerKeys.h"
+
+namespace termshade {
+
+namespace {
+
+/// Levenshtein distance (insertions, deletions, substitutions).
+size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+    }
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+/// The known name closest to `given`: a unique one it begins, else the
+/// nearest within half its length (at least 2 edits).
+std::string Nearest(const std::string& given, const std::vector<std::string>& known) {
+  std::vector<std::string> extending;
+  for (const std::string& name : known) {
+    if (given.size() >= 3 && name.rfind(given, 0) == 0) extending.push_back(name);
+  }
+  if (extending.size() == 1) return extending.front();
+  std::string best;
+  size_t bestDistance = std::max<size_t>(2, given.size() / 2) + 1;
+  for (const std::string& name : known) {
+    const size_t distance = EditDistance(given, name);
+    if (distance < bestDistance) {
+      bestDistance = distance;
+      best = name;
+    }
+  }
+  return best;
+}
+
+struct CommandExamples {
+  const char* path;  ///< subcommand names after "termshade", space-separated
+  std::vector<Example> examples;
+};
+
+const std::vector<CommandExamples>& AllExamples() {
+  static const std::vector<CommandExamples> kExamples{
+      {"",
+       {{"termshade", "the viewer on the embedded demo scene"},
+        {"termshade car.obj plane.stl", "the viewer on two models; n and p switch"},
+        {"termshade --method wire --mono part.ply", "wireframe, without colour"}}},
+      {"render",
+       {{"termshade render car.obj", "one 80x24 text frame to stdout"},
+        {"termshade render car.obj --size 120x40 --theta 0.8 --phi 1.1 --shade lambert",
+         "a bigger frame from another side, shaded as the viewer does"},
+        {"termshade render car.obj --format ansi --frames 36 --step 0.1745 -o spin.txt",
+         "a turntable of 36 coloured frames, 10 degrees apart, into a file"},
+        {"termshade render part.stl --format json --method auto", "one frame as a JSON object"}}},
+      {"generate",
+       {{"termshade generate sphere_cone", "the demo scene as .dat to stdout"},
+        {"termshade generate all -o data", "every shipped scene into data/"}}},
+      {"bench",
+       {{"termshade bench terminal", "what the viewer sends to the terminal"},
+        {"termshade bench methods", "speed against error of every method"}}},
+      {"bench terminal",
+       {{"termshade bench terminal", "the demo scene at 160x48, 10 s idle"},
+        {"termshade bench terminal car.obj --cols 100 --rows 30 --idle-seconds 2 --no-strace",
+         "another model and size, without strace"}}},
+      {"bench methods",
+       {{"termshade bench methods", "in the source folder: a table, bench-methods.csv and .svg"},
+        {"termshade bench methods --frames 2 --seconds 0.05 --csv m.csv --svg m.svg",
+         "a quick, rougher run"}}},
+  };
+  return kExamples;
+}
+
+void AddExamplesTo(CLI::App& command, const std::string& path) {
+  for (const CommandExamples& entry : AllExamples()) {
+    if (path == entry.path) SetExamples(command, entry.examples);
+  }
+  for (CLI::App* sub : command.get_subcommands([](CLI::App*) { return true; })) {
+    AddExamplesTo(*sub, path.empty() ? sub->get_name() : path + " " + sub->get_name());
+  }
+}
+
+void ListCommands(const CommandModel& command) {
+  std::string path;
+  for (size_t i = 1; i < command.path.size(); ++i) path += (i > 1 ? " " : "") + command.path[i];
+  std::cout << path << "\n";
+  for (const CommandModel& sub : command.subcommands) ListCommands(sub);
+}
+
+/// The deepest command the arguments chose.
+const CLI::App& ChosenCommand(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) return ChosenCommand(*sub);
+  return app;
+}
+
+}  // namespace
+
+void AddExamples(CLI::App& app) { AddExamplesTo(app, ""); }
+
+void SetUpHelp(CLI::App& app, const std::string& version, std::string& generateWhat) {
+  app.set_help_all_flag("--help-all", "all commands' options");
+  app.set_version_flag("-V,--version", "termshade " + version, "print the version and exit");
+  app.footer([] { return "Keys in the viewer (? shows them there too):\n" + FormatViewerKeys("  "); });
+  app.add_option("--generate", generateWhat, "write the man page or a shell completion script")
+      ->check(CLI::IsMember({"man", "bash", "zsh", "fish", "commands"}))
+      ->group("");  // hidden: the build uses it
+}
+
+int RunGenerate(const CLI::App& app, const std::string& version, const std::string& what) {
+  const CommandModel root = DescribeCommand(app);
+  const std::vector<std::string> extensions = ModelFileExtensions();
+  if (what == "man") WriteManPage(root, version, extensions, std::cout);
+  if (what == "bash") WriteBashCompletion(root, extensions, std::cout);
+  if (what == "zsh") WriteZshCompletion(root, extensions, std::cout);
+  if (what == "fish") WriteFishCompletion(root, extensions, std::cout);
+  if (what == "commands") ListCommands(root);
+  std::cout.flush();
+  return std::cout ? 0 : 1;
+}
+
+std::string NearestOptionHint(const CLI::App& app) {
+  const CLI::App& command = ChosenCommand(app);
+  std::vector<std::string> known;
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->get_group().empty()) continue;
+    for (const std::string& name : option->get_lnames()) known.push_back("--" + name);
+  }
+  for (const std::string& argument : app.remaining(true)) {
+    if (argument.rfind("--", 0) != 0 || argument.size() < 3) continue;
+    const std::string given = argument.substr(0, argument.find('='));
+    const std::string nearest = Nearest(given, known);
+    if (!nearest.empty()) return "did you mean " + nearest + "?";
+  }
+  return "";
+}
+
+}  // namespace termshade
