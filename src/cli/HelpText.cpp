@@ -29,8 +29,15 @@ size_t EditDistance(const std::string& a, const std::string& b) {
   return previous[b.size()];
 }
 
+size_t CommonPrefix(const std::string& a, const std::string& b) {
+  size_t length = 0;
+  while (length < a.size() && length < b.size() && a[length] == b[length]) ++length;
+  return length;
+}
+
 /// The known name closest to `given`: a unique one it begins, else the
-/// nearest within half its length (at least 2 edits).
+/// nearest within half its length (at least 2 edits), ties to the longer
+/// shared beginning.
 std::string Nearest(const std::string& given, const std::vector<std::string>& known) {
   std::vector<std::string> extending;
   for (const std::string& name : known) {
@@ -38,11 +45,12 @@ std::string Nearest(const std::string& given, const std::vector<std::string>& kn
   }
   if (extending.size() == 1) return extending.front();
   std::string best;
-  size_t bestDistance = std::max<size_t>(2, given.size() / 2) + 1;
+  size_t bestDistance = std::max<size_t>(2, given.size() / 2) + 1, bestPrefix = 0;
   for (const std::string& name : known) {
-    const size_t distance = EditDistance(given, name);
-    if (distance < bestDistance) {
+    const size_t distance = EditDistance(given, name), prefix = CommonPrefix(given, name);
+    if (distance < bestDistance || (distance == bestDistance && !best.empty() && prefix > bestPrefix)) {
       bestDistance = distance;
+      bestPrefix = prefix;
       best = name;
     }
   }

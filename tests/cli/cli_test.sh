@@ -104,5 +104,22 @@ check unknown_scene 2 "unknown scene" -- "$bin" generate nothing
 check viewer_needs_terminal 2 "termshade render" -- "$bin" "$src/data/cube.dat"
 check viewer_dumb_terminal 2 "termshade render" -- env TERM=dumb "$bin"
 
+# Help that teaches: -V, examples in every command's help, the nearest option.
+check short_version 0 "" -- "$bin" -V
+expect short_version_names_the_program grep -qE '^termshade [0-9]+\.[0-9]+\.[0-9]+$' "$work/out"
+"$bin" --generate commands >"$work/commands"
+expect every_command_listed grep -qx 'bench methods' "$work/commands"
+while IFS= read -r command; do
+  # shellcheck disable=SC2086  # the command's words
+  check "help_of_${command// /_}" 0 "" -- "$bin" $command --help
+  expect "examples_in_help_of_${command// /_}" grep -q '^Examples:' "$work/out"
+  expect "examples_run_${command// /_}" grep -q "^  termshade${command:+ $command}" "$work/out"
+done <"$work/commands"
+check suggests_method 2 "did you mean --method?" -- "$bin" render "$src/data/cube.dat" --me wire
+check suggests_mono 2 "did you mean --mono?" -- "$bin" --mnoo
+check suggests_seconds 2 "did you mean --seconds?" -- "$bin" bench methods --secs=1
+check no_wild_suggestion 2 "" -- "$bin" render "$src/data/cube.dat" --zzzzzzzzzz
+expect no_wild_suggestion_said test -z "$(grep "did you mean" "$work/err")"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
