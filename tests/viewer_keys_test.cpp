@@ -42,11 +42,13 @@ std::string GridText(const ScreenGrid& grid) {
 
 TEST(ViewerKeys, EveryBoundCharacterIsInTheTable) {
   std::set<char> documented;
-  for (const ViewerKey& key : ViewerKeyTable()) documented.insert(key.chars.begin(), key.chars.end());
+  for (const ViewerKey& key : ViewerKeyTable())
+    documented.insert(key.chars.begin(), key.chars.end());
   for (int c = 32; c < 127; ++c) {
     if (ActionForChar(c) != ViewerAction::kNone) {
       EXPECT_TRUE(documented.count(static_cast<char>(c)) == 1)
-          << "'" << static_cast<char>(c) << "' does something in the viewer but is not in the key table";
+          << "'" << static_cast<char>(c)
+          << "' does something in the viewer but is not in the key table";
     }
   }
 }
@@ -102,7 +104,8 @@ TEST(ViewerKeys, ManPageListsEveryRow) {
   for (const ViewerKey& key : ViewerKeyTable()) {
     EXPECT_NE(section.find(".TP\n\\fB" + roff(key.keys) + "\\fR\n" + roff(key.does) + "\n"),
               std::string::npos)
-        << key.keys << "\n" << section;
+        << key.keys << "\n"
+        << section;
   }
 }
 

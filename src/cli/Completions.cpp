@@ -20,7 +20,9 @@ std::string Replace(std::string text, const std::string& from, const std::string
 }
 
 /// Text inside single quotes in bash and zsh.
-std::string SingleQuoted(const std::string& text) { return "'" + Replace(text, "'", "'\\''") + "'"; }
+std::string SingleQuoted(const std::string& text) {
+  return "'" + Replace(text, "'", "'\\''") + "'";
+}
 
 void ForEachCommand(const CommandModel& command,
                     const std::function<void(const CommandModel&)>& visit) {
@@ -28,8 +30,22 @@ void ForEachCommand(const CommandModel& command,
   for (const CommandModel& sub : command.subcommands) ForEachCommand(sub, visit);
 }
 
+/// Every step from a command to a subcommand: ("termshade bench", "terminal",
+/// "termshade bench terminal"); the scripts follow them word by word.
+void ForEachSubcommandStep(
+    const CommandModel& root,
+    const std::function<void(const std::string&, const std::string&, const std::string&)>& visit) {
+  ForEachCommand(root, [&visit](const CommandModel& command) {
+    for (const CommandModel& sub : command.subcommands) {
+      visit(Join(command.path, " "), sub.path.back(), Join(sub.path, " "));
+    }
+  });
+}
+
 /// The command's name as a shell identifier: termshade_bench_terminal.
-std::string Identifier(const CommandModel& command) { return Join(command.path, "_"); }
+std::string Identifier(const CommandModel& command) {
+  return Join(command.path, "_");
+}
 
 const OptionModel* Positional(const CommandModel& command) {
   for (const OptionModel& option : command.options) {
@@ -44,7 +60,9 @@ std::vector<std::string> SubcommandNames(const CommandModel& command) {
   return names;
 }
 
-std::string FirstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+std::string FirstLine(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
 
 // ---- bash -------------------------------------------------------------------
 
@@ -53,7 +71,8 @@ void WriteBashValueCases(const CommandModel& command, std::ostream& out) {
   for (const OptionModel& option : command.options) {
     if (option.names.empty() || option.valueKind == ValueKind::kNone) continue;
     std::vector<std::string> patterns;
-    for (const std::string& name : option.names) patterns.push_back("\"" + path + "/" + name + "\"");
+    for (const std::string& name : option.names)
+      patterns.push_back("\"" + path + "/" + name + "\"");
     out << "    " << Join(patterns, " | ") << ")\n      ";
     switch (option.valueKind) {
       case ValueKind::kChoice:
@@ -89,13 +108,6 @@ void WriteBashCommandCase(const CommandModel& command, std::ostream& out) {
       << " ;;\n";
 }
 
-void WriteBashSubcommandCases(const CommandModel& command, std::ostream& out) {
-  for (const CommandModel& sub : command.subcommands) {
-    out << "      " << SingleQuoted(Join(command.path, " ") + "/" + sub.path.back()) << ") command="
-        << SingleQuoted(Join(sub.path, " ")) << " ;;\n";
-  }
-}
-
 // ---- zsh --------------------------------------------------------------------
 
 std::string ZshBracketed(const std::string& text) {
@@ -103,9 +115,8 @@ std::string ZshBracketed(const std::string& text) {
 }
 
 std::string ZshAction(const OptionModel& option) {
-  const std::string message = Replace(option.valueName.empty() ? option.positionalName
-                                                                : option.valueName,
-                                      ":", "\\:");
+  const std::string message =
+      Replace(option.valueName.empty() ? option.positionalName : option.valueName, ":", "\\:");
   switch (option.valueKind) {
     case ValueKind::kChoice:
       return message + ":(" + Join(option.choices, " ") + ")";
@@ -137,7 +148,8 @@ void WriteZshCommandFunction(const CommandModel& command, std::ostream& out) {
   out << "_termshade_command_" << id << "() {\n  _arguments -s -S \\\n";
   for (const OptionModel& option : command.options) {
     if (option.names.empty()) continue;
-    const std::string exclusive = option.names.size() > 1 ? "(" + Join(option.names, " ") + ")" : "";
+    const std::string exclusive =
+        option.names.size() > 1 ? "(" + Join(option.names, " ") + ")" : "";
     for (const std::string& name : option.names) {
       std::string spec = exclusive + name + "[" + ZshBracketed(option.description) + "]";
       if (option.valueKind != ValueKind::kNone) spec += ":" + ZshAction(option);
@@ -145,12 +157,14 @@ void WriteZshCommandFunction(const CommandModel& command, std::ostream& out) {
     }
   }
   if (!command.subcommands.empty()) {
-    out << "    " << SingleQuoted(std::string(positional != nullptr ? "*" : "1") +
-                                  ":argument:_termshade_arguments_" + id)
+    out << "    "
+        << SingleQuoted(std::string(positional != nullptr ? "*" : "1") +
+                        ":argument:_termshade_arguments_" + id)
         << "\n}\n\n";
   } else if (positional != nullptr) {
-    out << "    " << SingleQuoted(std::string(positional->repeatable ? "*" : "1") + ":" +
-                                  ZshAction(*positional))
+    out << "    "
+        << SingleQuoted(std::string(positional->repeatable ? "*" : "1") + ":" +
+                        ZshAction(*positional))
         << "\n}\n\n";
   } else {
     out << "\n}\n\n";
@@ -218,7 +232,9 @@ void WriteBashCompletion(const CommandModel& root, const std::vector<std::string
          "  for file in \"${found[@]}\"; do\n"
          "    if [[ -d $file ]]; then COMPREPLY+=(\"$file\"); continue; fi\n"
          "    case \"${file,,}\" in\n"
-         "      *." << Join(modelExtensions, " | *.") << ") COMPREPLY+=(\"$file\") ;;\n"
+         "      *."
+      << Join(modelExtensions, " | *.")
+      << ") COMPREPLY+=(\"$file\") ;;\n"
          "    esac\n"
          "  done\n"
          "}\n\n"
@@ -236,7 +252,11 @@ void WriteBashCompletion(const CommandModel& root, const std::vector<std::string
          "  local command=termshade i\n"
          "  for ((i = 1; i < COMP_CWORD; i++)); do\n"
          "    case \"$command/${COMP_WORDS[i]}\" in\n";
-  ForEachCommand(root, [&out](const CommandModel& command) { WriteBashSubcommandCases(command, out); });
+  ForEachSubcommandStep(
+      root, [&out](const std::string& from, const std::string& word, const std::string& to) {
+        out << "      " << SingleQuoted(from + "/" + word) << ") command=" << SingleQuoted(to)
+            << " ;;\n";
+      });
   out << "    esac\n"
          "  done\n"
          "  case \"$command/$prev\" in\n";
@@ -263,18 +283,18 @@ void WriteZshCompletion(const CommandModel& root, const std::vector<std::string>
          "_termshade_models() {\n"
          "  _files -g '*.(#i)("
       << Join(modelExtensions, "|") << ")(-.)'\n}\n\n";
-  ForEachCommand(root, [&out](const CommandModel& command) { WriteZshCommandFunction(command, out); });
+  ForEachCommand(root,
+                 [&out](const CommandModel& command) { WriteZshCommandFunction(command, out); });
   // Dispatch: find the subcommand, then complete its words alone.
   out << "_termshade() {\n"
          "  local command=termshade i start=1\n"
          "  for ((i = 2; i < CURRENT; i++)); do\n"
          "    case \"$command/$words[i]\" in\n";
-  ForEachCommand(root, [&out](const CommandModel& command) {
-    for (const CommandModel& sub : command.subcommands) {
-      out << "      " << SingleQuoted(Join(command.path, " ") + "/" + sub.path.back())
-          << ") command=" << SingleQuoted(Join(sub.path, " ")) << "; start=$i ;;\n";
-    }
-  });
+  ForEachSubcommandStep(
+      root, [&out](const std::string& from, const std::string& word, const std::string& to) {
+        out << "      " << SingleQuoted(from + "/" + word) << ") command=" << SingleQuoted(to)
+            << "; start=$i ;;\n";
+      });
   out << "    esac\n"
          "  done\n"
          "  if ((start > 1)); then\n"
@@ -299,12 +319,11 @@ void WriteFishCompletion(const CommandModel& root, const std::vector<std::string
          "    set -l command termshade\n"
          "    for word in (commandline -opc)[2..-1]\n"
          "        switch \"$command/$word\"\n";
-  ForEachCommand(root, [&out](const CommandModel& command) {
-    for (const CommandModel& sub : command.subcommands) {
-      out << "            case " << FishQuoted(Join(command.path, " ") + "/" + sub.path.back())
-          << "\n                set command " << FishQuoted(Join(sub.path, " ")) << "\n";
-    }
-  });
+  ForEachSubcommandStep(
+      root, [&out](const std::string& from, const std::string& word, const std::string& to) {
+        out << "            case " << FishQuoted(from + "/" + word)
+            << "\n                set command " << FishQuoted(to) << "\n";
+      });
   out << "        end\n"
          "    end\n"
          "    echo $command\n"
@@ -321,7 +340,9 @@ void WriteFishCompletion(const CommandModel& root, const std::vector<std::string
          "            continue\n"
          "        end\n"
          "        switch (string lower -- $file)\n"
-         "            case '*." << Join(modelExtensions, "' '*.") << "'\n"
+         "            case '*."
+      << Join(modelExtensions, "' '*.")
+      << "'\n"
          "                echo $file\n"
          "        end\n"
          "    end\n"

@@ -48,7 +48,8 @@ std::string Nearest(const std::string& given, const std::vector<std::string>& kn
   size_t bestDistance = std::max<size_t>(2, given.size() / 2) + 1, bestPrefix = 0;
   for (const std::string& name : known) {
     const size_t distance = EditDistance(given, name), prefix = CommonPrefix(given, name);
-    if (distance < bestDistance || (distance == bestDistance && !best.empty() && prefix > bestPrefix)) {
+    if (distance < bestDistance ||
+        (distance == bestDistance && !best.empty() && prefix > bestPrefix)) {
       bestDistance = distance;
       bestPrefix = prefix;
       best = name;
@@ -117,12 +118,15 @@ const CLI::App& ChosenCommand(const CLI::App& app) {
 
 }  // namespace
 
-void AddExamples(CLI::App& app) { AddExamplesTo(app, ""); }
+void AddExamples(CLI::App& app) {
+  AddExamplesTo(app, "");
+}
 
 void SetUpHelp(CLI::App& app, const std::string& version, std::string& generateWhat) {
   app.set_help_all_flag("--help-all", "all commands' options");
   app.set_version_flag("-V,--version", "termshade " + version, "print the version and exit");
-  app.footer([] { return "Keys in the viewer (? shows them there too):\n" + FormatViewerKeys("  "); });
+  app.footer(
+      [] { return "Keys in the viewer (? shows them there too):\n" + FormatViewerKeys("  "); });
   app.add_option("--generate", generateWhat, "write the man page or a shell completion script")
       ->check(CLI::IsMember({"man", "bash", "zsh", "fish", "commands"}))
       ->group("");  // hidden: the build uses it

@@ -30,8 +30,9 @@ constexpr std::array kEnvironment{
 
 constexpr std::array kExitStatus{
     Entry{"0", "Success."},
-    Entry{"1", "Bad input: a model or other file could not be read; the message names the file "
-               "(and line:column for .dat) and what was expected."},
+    Entry{"1",
+          "Bad input: a model or other file could not be read; the message names the file "
+          "(and line:column for .dat) and what was expected."},
     Entry{"2", "Bad usage: an unknown option or a value out of range."},
     Entry{"3", "Internal error."},
     Entry{"128+N", "The viewer was ended by signal N, after restoring the terminal."},
@@ -63,8 +64,12 @@ std::string Roff(const std::string& text) {
   return result;
 }
 
-std::string Bold(const std::string& text) { return "\\fB" + Escape(text) + "\\fR"; }
-std::string Italic(const std::string& text) { return "\\fI" + Escape(text) + "\\fR"; }
+std::string Bold(const std::string& text) {
+  return "\\fB" + Escape(text) + "\\fR";
+}
+std::string Italic(const std::string& text) {
+  return "\\fI" + Escape(text) + "\\fR";
+}
 
 std::string JoinedText(const std::string& text) {
   std::string joined = text;
@@ -107,7 +112,8 @@ void WriteOptions(const CommandModel& command, std::ostream& out) {
           << (option.repeatable ? "..." : "") << "\n";
     } else {
       std::string names;
-      for (const std::string& name : option.names) names += (names.empty() ? "" : ", ") + Bold(name);
+      for (const std::string& name : option.names)
+        names += (names.empty() ? "" : ", ") + Bold(name);
       out << names;
       if (!option.valueName.empty()) out << " " << Italic(option.valueName);
       out << "\n";
@@ -135,7 +141,8 @@ void WriteCommands(const CommandModel& command, std::ostream& out) {
 
 void WriteExamples(const CommandModel& command, std::ostream& out) {
   // A command that only groups others shows its members' examples.
-  for (const Example& example : command.subcommandRequired ? std::vector<Example>{} : command.examples) {
+  for (const Example& example :
+       command.subcommandRequired ? std::vector<Example>{} : command.examples) {
     out << ".TP\n" << Bold(example.command) << "\n" << Roff(example.what);
   }
   for (const CommandModel& sub : command.subcommands) WriteExamples(sub, out);
@@ -172,10 +179,12 @@ void WriteManPage(const CommandModel& root, const std::string& version,
   for (const ViewerKey& key : ViewerKeyTable()) {
     out << ".TP\n" << Bold(std::string(key.keys)) << "\n" << Roff(std::string(key.does));
   }
-  out << ".SH FILES\n.TP\n" << Italic("MODEL") << ".dat\n"
+  out << ".SH FILES\n.TP\n"
+      << Italic("MODEL") << ".dat\n"
       << "termshade's own polygon format (a vertex count, vertices, faces as 1-based vertex "
          "lists), read by its own parser; errors name file:line:column.\n"
-      << ".TP\n" << Italic("MODEL") << ".obj, .stl, .ply, .off, .gltf, ...\n"
+      << ".TP\n"
+      << Italic("MODEL") << ".obj, .stl, .ply, .off, .gltf, ...\n"
       << "Read through the Open Asset Import Library (Assimp) with polygons kept. Every "
          "extension read: ";
   std::string list;

@@ -146,7 +146,9 @@ int Run(int argc, char** argv) {
   // Headless frames: termshade render MODEL [options]
   RenderCommandOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "render frames to stdout or a file");
-  renderCommand->add_option("model", render.modelPath, "model file")->required()->type_name("MODEL");
+  renderCommand->add_option("model", render.modelPath, "model file")
+      ->required()
+      ->type_name("MODEL");
   AddViewOptions(*renderCommand, render);
   AddLookOptions(*renderCommand, render);
   renderCommand->add_option("--format", render.format, "text (default), ansi or json")

@@ -29,7 +29,9 @@ constexpr std::array kKeys{
 
 }  // namespace
 
-std::span<const ViewerKey> ViewerKeyTable() { return kKeys; }
+std::span<const ViewerKey> ViewerKeyTable() {
+  return kKeys;
+}
 
 std::string FormatViewerKeys(std::string_view indent) {
   size_t keysWidth = 0;
