@@ -71,8 +71,9 @@ void WriteBashValueCases(const CommandModel& command, std::ostream& out) {
   for (const OptionModel& option : command.options) {
     if (option.names.empty() || option.valueKind == ValueKind::kNone) continue;
     std::vector<std::string> patterns;
-    for (const std::string& name : option.names)
-      patterns.push_back("\"" + path + "/" + name + "\"");
+    for (const std::string& name : option.names) {
+      patterns.push_back(SingleQuoted(std::string(path).append("/").append(name)));
+    }
     out << "    " << Join(patterns, " | ") << ")\n      ";
     switch (option.valueKind) {
       case ValueKind::kChoice:
