@@ -87,15 +87,23 @@ bool ConfinedIOSystem::Resolve(const std::string& name, std::string& resolved,
     reason = "a reference to another file, and a model read from standard input has no folder";
     return false;
   }
-  // Importers glue a reference onto the model's folder: "/m//etc/passwd" is the absolute "/etc/passwd".
-  if (name.size() > folder_.size() + 2 && name.compare(0, folder_.size(), folder_) == 0 &&
-      name.compare(folder_.size(), 2, "//") == 0) {
-    reason = "an absolute path; references must be relative to the model's folder";
-    return false;
+  // Importers glue a reference onto the model's folder: "/m//etc/passwd" is
+  // the absolute "/etc/passwd" when that exists outside; Assimp's own retries
+  // build "/m//x.bin" for "/m/x.bin" too.
+  std::string path = name;
+  if (path.size() > folder_.size() + 2 && path.compare(0, folder_.size(), folder_) == 0 &&
+      path.compare(folder_.size(), 2, "//") == 0) {
+    path.erase(0, folder_.size() + 1);
+    struct stat info {};
+    if (!IsInside(path, folder_) && stat(path.c_str(), &info) == 0) {
+      reason = "an absolute path; references must be relative to the model's folder";
+      return false;
+    }
+    path.erase(0, 1);
   }
   // Step 2: where it really is, symbolic links and '..' resolved.
   const std::filesystem::path candidate =
-      name.front() == '/' ? std::filesystem::path(name) : std::filesystem::path(folder_) / name;
+      path.front() == '/' ? std::filesystem::path(path) : std::filesystem::path(folder_) / path;
   std::error_code error;
   const std::filesystem::path canonical = std::filesystem::weakly_canonical(candidate, error);
   if (error) {
@@ -104,8 +112,8 @@ bool ConfinedIOSystem::Resolve(const std::string& name, std::string& resolved,
   }
   resolved = canonical.string();
   if (!IsInside(resolved, folder_)) {
-    const bool underFolder = name.compare(0, folder_.size() + 1, folder_ + "/") == 0;
-    reason = name.front() == '/' && !underFolder ? "an absolute path outside the model's folder"
+    const bool underFolder = path.compare(0, folder_.size() + 1, folder_ + "/") == 0;
+    reason = path.front() == '/' && !underFolder ? "an absolute path outside the model's folder"
                                                  : "a path that leaves the model's folder";
     return false;
   }

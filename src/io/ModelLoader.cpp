@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -93,6 +95,38 @@ Loaded<Mesh> LoadBytes(std::string bytes, const ModelPlace& place, const LoadOpt
   return LoadImported(std::move(bytes), known ? format : "", place, options);
 }
 
+// The float stages of the renderer keep about 1e-30 to 1e30 model units
+// exact; a model whose size lies outside would draw blank or broken, so it is
+// refused with its size instead.
+Loaded<Mesh> WithDrawableSize(Loaded<Mesh> mesh) {
+  if (!mesh.Ok()) return mesh;
+  constexpr double kSmallest = 1e-30, kLargest = 1e30;
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const Vec3& p : mesh.Value().verticesFile) {
+    const double xyz[3] = {p.x, p.y, p.z};
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!std::isfinite(xyz[axis])) continue;
+      lo[axis] = std::min(lo[axis], xyz[axis]);
+      hi[axis] = std::max(hi[axis], xyz[axis]);
+    }
+  }
+  double size = 0.0, largest = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (hi[axis] < lo[axis]) continue;
+    size = std::max(size, hi[axis] - lo[axis]);
+    largest = std::max({largest, std::fabs(lo[axis]), std::fabs(hi[axis])});
+  }
+  if (size > kLargest || largest > kLargest || (size > 0.0 && size < kSmallest)) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "the model's size (%.3g model units, coordinates up to %.3g) is outside what "
+                  "can be drawn (1e-30 to 1e30)",
+                  size, largest);
+    return LoadError{mesh.Value().name, 0, 0, text};
+  }
+  return mesh;
+}
+
 Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
   // Standard input: bounded by the budget, never a terminal.
   if (path == "-") {
@@ -135,7 +169,7 @@ bool UsesImporter(const std::string& path) {
 
 Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& options) {
   try {
-    return LoadChecked(path, options);
+    return WithDrawableSize(LoadChecked(path, options));
   } catch (const std::bad_alloc&) {
     return LoadError{path, 0, 0,
                      "ran out of memory while loading (the memory budget is " +

@@ -22,10 +22,18 @@ here=$(cd "$(dirname "$0")" && pwd)
 results=$(mktemp)
 trap 'rm -f "$results"' EXIT
 
-for dir in "$@"; do
-  [ -d "$dir" ] || continue
-  find "$dir" -type f -print0
-done | sort -z | xargs -0 -P 2 -n 1 bash "$here/corpus_check.sh" "$bin" "$seconds" "$memoryKib" >"$results"
+# FIFOs, links and a folder as models: made here, listed by name (find -type f skips them).
+special=$(mktemp -d)
+trap 'rm -f "$results"; rm -rf "$special"' EXIT
+bash "$here/bad/make_special_files.sh" "$special/special"
+{
+  for dir in "$@"; do
+    [ -d "$dir" ] || continue
+    find "$dir" -type f -print0
+  done
+  find "$special/special" -mindepth 1 -maxdepth 1 ! -name 'fifo.*' ! -name 'symlink_*' -print0
+  printf '%s\0' /dev/zero
+} | sort -z | xargs -0 -P 2 -n 1 bash "$here/corpus_check.sh" "$bin" "$seconds" "$memoryKib" >"$results"
 
 files=$(wc -l <"$results")
 rendered=$(grep -c '^rendered' "$results")
