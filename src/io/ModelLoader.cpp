@@ -82,7 +82,7 @@ Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const Mo
 Loaded<Mesh> LoadBytes(std::string bytes, const ModelPlace& place, const LoadOptions& options) {
   // Step 1: the format: the hint, the extension, else the content.
   std::string format = Normalized(options.formatHint);
-  if (format.empty() && !place.canonical.empty()) format = LowerExtension(place.displayName);
+  if (format.empty()) format = LowerExtension(place.displayName);
   if (format == "dat") return LoadDat(bytes, place, options);
   const bool known = AssimpKnowsExtension(format);
   if (bytes.empty()) return LoadError{place.displayName, 0, 0, "the file is empty"};
@@ -165,6 +165,17 @@ size_t DefaultMemoryBudgetBytes() {
 bool UsesImporter(const std::string& path) {
   const std::string ext = LowerExtension(path);
   return ext != "dat" && AssimpKnowsExtension(ext);
+}
+
+Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
+                            const LoadOptions& options) {
+  try {
+    return WithDrawableSize(LoadBytes(std::move(bytes), ModelPlace{name, "", ""}, options));
+  } catch (const std::bad_alloc&) {
+    return LoadError{name, 0, 0, "ran out of memory while loading"};
+  } catch (const std::exception& e) {
+    return LoadError{name, 0, 0, std::string("cannot import: ") + e.what()};
+  }
 }
 
 Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& options) {

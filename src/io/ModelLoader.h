@@ -40,6 +40,13 @@ struct LoadOptions {
 /// a LoadError naming the file.
 Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& options = {});
 
+/// Loads a model from bytes in memory (standard input, fuzzing): as
+/// LoadModelFile, with name in messages, the format from options.formatHint,
+/// else name's extension, else the content; the model has no folder, so any
+/// file it references is refused.
+Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
+                            const LoadOptions& options = {});
+
 /// True for file names whose extension LoadModelFile hands to the importer.
 bool UsesImporter(const std::string& path);
 
