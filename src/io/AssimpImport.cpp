@@ -236,9 +236,15 @@ std::string ImporterMessage(const std::string& raw, const ImportSource& source) 
 }  // namespace
 
 bool AssimpKnowsExtension(const std::string& format) {
-  if (format.empty()) return false;
-  const Assimp::Importer importer;
-  return importer.IsExtensionSupported("." + format);
+  if (format.empty() || format.find_first_of("*;") != std::string::npos) return false;
+  // "*.3ds;*.obj;...", asked once: building an Importer registers every format.
+  static const std::string kExtensions = [] {
+    const Assimp::Importer importer;
+    std::string list;
+    importer.GetExtensionList(list);
+    return list + ";";
+  }();
+  return kExtensions.find("*." + format + ";") != std::string::npos;
 }
 
 Loaded<Mesh> ImportWithAssimp(const ImportSource& source, std::string bytes,
