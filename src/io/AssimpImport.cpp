@@ -13,9 +13,9 @@
 #include <streambuf>
 #include <new>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
+#include "geometry/WeldVertices.h"
 #include "io/ConfinedIOSystem.h"
 #include "io/LoadBudget.h"
 
@@ -121,45 +121,20 @@ Rgb MeanVertexColor(const aiMesh& mesh, const aiFace& face) {
              std::clamp(sum[2] / n, 0.0f, 1.0f)};
 }
 
-// Exact coordinates as a hash key (-0 and +0 are the same point).
-struct PositionKey {
-  uint32_t bits[3];
-  bool operator==(const PositionKey& other) const {
-    return std::memcmp(bits, other.bits, sizeof bits) == 0;
-  }
-};
-struct PositionHash {
-  size_t operator()(const PositionKey& key) const {
-    uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (uint32_t b : key.bits) h = (h ^ b) * 0xBF58476D1CE4E5B9ull;
-    return static_cast<size_t>(h ^ (h >> 31));
-  }
-};
-PositionKey KeyOf(const aiVector3D& p) {
-  PositionKey key{};
-  const float xyz[3] = {p.x + 0.0f, p.y + 0.0f, p.z + 0.0f};
-  std::memcpy(key.bits, xyz, sizeof key.bits);
-  return key;
-}
-
-// Builds our mesh: vertices welded by exact position (importers such as OBJ's
-// give every corner its own vertex), polygons kept, two-corner faces as segments.
+// Builds our mesh: polygons kept, two-corner faces as segments, then vertices
+// welded by exact position (importers such as OBJ's give every corner its own vertex).
 Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
   Mesh out;
-  std::unordered_map<PositionKey, uint32_t, PositionHash> vertexOf;
-  std::vector<uint32_t> remap, corners;
+  std::vector<uint32_t> corners;
   std::vector<std::optional<Rgb>> colors;
   bool anyColor = false;
   for (const PlacedMesh& item : placed) {
     const aiMesh& mesh = *item.mesh;
     if (mesh.mVertices == nullptr || mesh.mFaces == nullptr) continue;
-    remap.resize(mesh.mNumVertices);
+    const auto base = static_cast<uint32_t>(out.verticesFile.size());
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D p = item.transform * mesh.mVertices[v];
-      const auto [it, added] =
-          vertexOf.try_emplace(KeyOf(p), static_cast<uint32_t>(out.verticesFile.size()));
-      if (added) out.verticesFile.push_back({p.x, p.y, p.z});
-      remap[v] = it->second;
+      out.verticesFile.push_back({p.x, p.y, p.z});
     }
     const std::optional<Rgb> materialColor = FileMaterialColor(scene, mesh.mMaterialIndex);
     const bool vertexColors = mesh.HasVertexColors(0);
@@ -168,7 +143,7 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
       if (face.mIndices == nullptr) continue;
       corners.clear();
       for (unsigned i = 0; i < face.mNumIndices; ++i) {
-        if (face.mIndices[i] < mesh.mNumVertices) corners.push_back(remap[face.mIndices[i]]);
+        if (face.mIndices[i] < mesh.mNumVertices) corners.push_back(base + face.mIndices[i]);
       }
       if (corners.size() >= 3 && corners.size() == face.mNumIndices) {
         out.AddFace(corners);
@@ -184,6 +159,7 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
     out.faceColors.reserve(colors.size());
     for (const auto& color : colors) out.faceColors.push_back(color.value_or(kNeutralFaceColor));
   }
+  WeldExactPositions(out);
   return out;
 }
 

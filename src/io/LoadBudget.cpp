@@ -147,7 +147,7 @@ std::optional<std::string> CheckHeaderCounts(std::string_view format, std::strin
 
 size_t EstimateImportBytes(std::string_view format, size_t fileBytes) {
   // Peak resident bytes per file byte, measured with /usr/bin/time -v on
-  // generated 200k-triangle spheres (tests/models/generators/uv_sphere.py),
+  // generated 200k-triangle spheres (termshade generate sphere -o FILE),
   // with a margin; formats not measured get the largest.
   double perByte = 24;
   if (format == "dat") perByte = 12;
