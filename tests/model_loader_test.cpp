@@ -129,6 +129,17 @@ TEST(ModelLoader, VertexColoursAreAveragedOverTheFace) {
 TEST(ModelLoader, NoColourInTheFileLeavesFaceColoursEmpty) {
   EXPECT_TRUE(Good("tests/models/good/quad_and_triangle.obj").faceColors.empty());
   EXPECT_TRUE(Good("data/cube.dat").faceColors.empty());
+  for (const char* name : {"plain.ply", "plain.off"}) {
+    const std::string text =
+        std::string(name) == "plain.ply"
+            ? "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+              "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
+            : "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    Loaded<Mesh> mesh = LoadModelBytes(text, name);
+    ASSERT_TRUE(mesh.Ok()) << mesh.Error().ToString();
+    EXPECT_TRUE(mesh.Value().faceColors.empty()) << name;
+  }
 }
 
 TEST(ModelLoader, UpAxisFollowsTheFormat) {

@@ -93,14 +93,15 @@ std::optional<Rgb> FileMaterialColor(const aiScene& scene, unsigned materialInde
     return std::nullopt;
   }
   const aiMaterial& material = *scene.mMaterials[materialIndex];
+  // Importers make up a material where the file has none: named
+  // AI_DEFAULT_MATERIAL_NAME (OBJ, STL), or unnamed with a diffuse colour
+  // only (PLY, OFF). A glTF material may be unnamed but has a base colour.
   aiString name;
-  if (material.Get(AI_MATKEY_NAME, name) == aiReturn_SUCCESS &&
-      std::strcmp(name.C_Str(), AI_DEFAULT_MATERIAL_NAME) == 0) {
-    return std::nullopt;
-  }
+  const bool named = material.Get(AI_MATKEY_NAME, name) == aiReturn_SUCCESS && name.length > 0;
+  if (named && std::strcmp(name.C_Str(), AI_DEFAULT_MATERIAL_NAME) == 0) return std::nullopt;
   aiColor4D color;
   if (material.Get(AI_MATKEY_BASE_COLOR, color) != aiReturn_SUCCESS &&
-      material.Get(AI_MATKEY_COLOR_DIFFUSE, color) != aiReturn_SUCCESS) {
+      (!named || material.Get(AI_MATKEY_COLOR_DIFFUSE, color) != aiReturn_SUCCESS)) {
     return std::nullopt;
   }
   return Rgb{std::clamp(color.r, 0.0f, 1.0f), std::clamp(color.g, 0.0f, 1.0f),
