@@ -35,15 +35,18 @@ size_t CommonPrefix(const std::string& a, const std::string& b) {
   return length;
 }
 
-/// The known name closest to `given`: a unique one it begins, else the
+/// The known names closest to `given`: those it begins (sorted), else the
 /// nearest within half its length (at least 2 edits), ties to the longer
-/// shared beginning.
-std::string Nearest(const std::string& given, const std::vector<std::string>& known) {
+/// shared beginning; empty when none is near.
+std::vector<std::string> Nearest(const std::string& given, const std::vector<std::string>& known) {
   std::vector<std::string> extending;
   for (const std::string& name : known) {
     if (given.size() >= 3 && name.rfind(given, 0) == 0) extending.push_back(name);
   }
-  if (extending.size() == 1) return extending.front();
+  if (!extending.empty()) {
+    std::sort(extending.begin(), extending.end());
+    return extending;
+  }
   std::string best;
   size_t bestDistance = std::max<size_t>(2, given.size() / 2) + 1, bestPrefix = 0;
   for (const std::string& name : known) {
@@ -55,7 +58,8 @@ std::string Nearest(const std::string& given, const std::vector<std::string>& kn
       best = name;
     }
   }
-  return best;
+  if (best.empty()) return {};
+  return {best};
 }
 
 struct CommandExamples {
@@ -160,8 +164,14 @@ std::string NearestOptionHint(const CLI::App& app) {
   for (const std::string& argument : app.remaining(true)) {
     if (argument.rfind("--", 0) != 0 || argument.size() < 3) continue;
     const std::string given = argument.substr(0, argument.find('='));
-    const std::string nearest = Nearest(given, known);
-    if (!nearest.empty()) return "did you mean " + nearest + "?";
+    const std::vector<std::string> nearest = Nearest(given, known);
+    if (nearest.empty()) continue;
+    std::string hint = "did you mean " + nearest.front();
+    for (size_t i = 1; i < nearest.size(); ++i) {
+      hint += i + 1 == nearest.size() ? " or " : ", ";
+      hint += nearest[i];
+    }
+    return hint + "?";
   }
   return "";
 }

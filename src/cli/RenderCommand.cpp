@@ -2,12 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <optional>
 #include <iostream>
 
 #include "geometry/FitCamera.h"
 #include "io/FrameFormats.h"
 #include "io/ModelLoader.h"
+#include "io/OutputFile.h"
 #include "raster/Renderer.h"
 
 namespace termshade {
@@ -35,24 +36,34 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
   }
 
+  if (!options.outputPath.empty() && options.modelPath != "-" &&
+      SameFile(options.outputPath, options.modelPath)) {
+    return UsageError("-o " + SanitizeForTerminal(options.outputPath) +
+                      " is the model itself; refusing to overwrite it");
+  }
+
   // Step 2: the model.
-  Loaded<Mesh> mesh = LoadModelFile(options.modelPath);
+  LoadOptions loadOptions;
+  loadOptions.formatHint = options.inputFormat;
+  if (options.memoryBudgetBytes > 0) loadOptions.memoryBudgetBytes = options.memoryBudgetBytes;
+  Loaded<Mesh> mesh = LoadModelFile(options.modelPath, loadOptions);
   if (!mesh.Ok()) {
     std::cerr << mesh.Error().ToString() << "\n";
     return 1;
   }
   const Scene scene = PrepareScene(std::move(mesh.Value()));
 
-  // Step 3: the output stream.
-  std::ofstream file;
+  // Step 3: the output: a file replaced whole (never half-written), or stdout.
+  std::optional<OutputFile> file;
+  const auto outputFailed = [&](const std::string& why) {
+    std::cerr << SanitizeForTerminal(options.outputPath) << ": " << SanitizeForTerminal(why)
+              << "\n";
+    return 1;
+  };
   if (!options.outputPath.empty()) {
-    file.open(options.outputPath, std::ios::binary | std::ios::trunc);
-    if (!file) {
-      std::cerr << SanitizeForTerminal(options.outputPath) << ": cannot write\n";
-      return 1;
-    }
+    file.emplace(options.outputPath);
+    if (const auto problem = file->Open()) return outputFailed(*problem);
   }
-  std::ostream& out = options.outputPath.empty() ? std::cout : file;
 
   // Step 4: the frames, one after another.
   RenderOptions renderOptions;
@@ -85,11 +96,19 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     if (*format == FrameFormat::kJson) {
       AppendJsonFrame(cells, depth, scene, camera, renderOptions, text);
     }
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    if (file) {
+      if (const auto problem = file->Write(text)) return outputFailed(*problem);
+    } else {
+      std::cout.write(text.data(), static_cast<std::streamsize>(text.size()));
+    }
   }
-  out.flush();
-  if (!out) {
-    std::cerr << "termshade render: writing the frames failed\n";
+  if (file) {
+    if (const auto problem = file->Commit()) return outputFailed(*problem);
+    return 0;
+  }
+  std::cout.flush();
+  if (!std::cout) {
+    std::cerr << "termshade render: writing the frames to standard output failed\n";
     return 1;
   }
   return 0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "raster/RenderOptions.h"
@@ -23,6 +24,8 @@ struct RenderCommandOptions {
   int frames = 1;
   double stepRadians = 0.1;
   bool noCull = false;
+  std::string inputFormat;       ///< --input-format: extension for content that cannot be sniffed
+  size_t memoryBudgetBytes = 0;  ///< --memory-budget; 0: DefaultMemoryBudgetBytes()
 };
 
 /// Runs the command; returns the process exit code (0 ok, 1 bad input, 2 bad usage).

@@ -13,32 +13,38 @@
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
 #include "cli/RenderCommand.h"
+#include "io/LoadBudget.h"
+#include "io/LoadError.h"
+#include "io/ModelLoader.h"
 #include "tui/Viewer.h"
 
 namespace {
 
 using termshade::RenderCommandOptions;
 
-// CLI11's own exit codes are not ours: help is 0, every usage error 2.
+// CLI11's own exit codes are not ours: help is 0, every usage error 2. Its
+// text quotes the command line, so it is escaped before reaching a terminal.
 int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
+  using termshade::SanitizeForTerminal;
+  using termshade::SanitizeLinesForTerminal;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
+    std::cout << SanitizeLinesForTerminal(app.help());
     done = true;
     return 0;
   } catch (const CLI::CallForAllHelp&) {
-    std::cout << app.help("", CLI::AppFormatMode::All);
+    std::cout << SanitizeLinesForTerminal(app.help("", CLI::AppFormatMode::All));
     done = true;
     return 0;
   } catch (const CLI::CallForVersion& version) {
-    std::cout << version.what() << "\n";
+    std::cout << SanitizeLinesForTerminal(version.what()) << "\n";
     done = true;
     return 0;
   } catch (const CLI::ParseError& e) {
-    std::cerr << "termshade: " << e.what() << "\n";
+    std::cerr << "termshade: " << SanitizeLinesForTerminal(e.what()) << "\n";
     if (const std::string hint = termshade::NearestOptionHint(app); !hint.empty()) {
-      std::cerr << "termshade: " << hint << "\n";
+      std::cerr << "termshade: " << SanitizeLinesForTerminal(hint) << "\n";
     }
     std::cerr << "Run 'termshade --help' for the options.\n";
     done = true;
@@ -125,7 +131,7 @@ int Run(int argc, char** argv) {
       "termshade: shaded 3D polygon models in a terminal.\n"
       "With no command, opens the interactive viewer on MODEL files (the demo scene if none);\n"
       "press ? in the viewer for its keys.",
-      "termshade"};
+      "termshade"};  // named here, so a hostile argv[0] never reaches the help text
   std::string generateWhat;
   termshade::SetUpHelp(app, TERMSHADE_VERSION, generateWhat);
   app.require_subcommand(0, 1);
@@ -146,7 +152,7 @@ int Run(int argc, char** argv) {
   // Headless frames: termshade render MODEL [options]
   RenderCommandOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "render frames to stdout or a file");
-  renderCommand->add_option("model", render.modelPath, "model file")
+  renderCommand->add_option("model", render.modelPath, "model file, or - for standard input")
       ->required()
       ->type_name("MODEL");
   AddViewOptions(*renderCommand, render);
@@ -159,6 +165,25 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(1, 100000));
   renderCommand->add_option("--step", render.stepRadians,
                             "turntable: theta step between frames, radians (default 0.1)");
+  renderCommand
+      ->add_option("--input-format", render.inputFormat,
+                   "the model's format as an extension (stl, obj, ...) where the name and "
+                   "content cannot tell it (standard input)")
+      ->type_name("EXT");
+  renderCommand
+      ->add_option_function<std::string>(
+          "--memory-budget",
+          [&render](const std::string& text) {
+            const auto bytes = termshade::ParseByteCount(text);
+            if (!bytes) {
+              throw CLI::ValidationError("--memory-budget",
+                                         "expected a size such as 4G, 512M or 1000000 (bytes)");
+            }
+            render.memoryBudgetBytes = *bytes;
+          },
+          "most memory loading may take, e.g. 4G or 512M (default: TERMSHADE_MEMORY_BUDGET, "
+          "else 2G); a model needing more is refused")
+      ->type_name("SIZE");
 
   // Scene files: termshade generate NAME [-o FILE]
   termshade::GenerateCommandOptions generate;
@@ -243,6 +268,14 @@ int Run(int argc, char** argv) {
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
   if (terminalCommand->parsed()) {
+    if (!terminalBench.modelPath.empty()) {  // a model that cannot load gives no meaningful table
+      const termshade::Loaded<termshade::Mesh> mesh =
+          termshade::LoadModelFile(terminalBench.modelPath);
+      if (!mesh.Ok()) {
+        std::cerr << mesh.Error().ToString() << "\n";
+        return 1;
+      }
+    }
     terminalBench.viewerPath = SelfPath();
     return termshade::RunTerminalBench(terminalBench);
   }
@@ -259,7 +292,7 @@ int main(int argc, char** argv) {
   try {
     return Run(argc, argv);
   } catch (const std::exception& e) {
-    std::cerr << "termshade: internal error: " << e.what() << "\n";
+    std::cerr << "termshade: internal error: " << termshade::SanitizeForTerminal(e.what()) << "\n";
   } catch (...) {
     std::cerr << "termshade: internal error\n";
   }

@@ -88,13 +88,19 @@ class LineCursor {
 
 class DatParser {
  public:
-  DatParser(std::string_view text, const std::string& fileName) : text_(text), file_(fileName) {
+  DatParser(std::string_view text, const std::string& fileName, const std::atomic<bool>* cancel,
+            const std::function<void(double)>& progress)
+      : text_(text), file_(fileName), cancel_(cancel), progress_(progress) {
     mesh_.name = fileName;
   }
 
   Loaded<Mesh> Run() {
+    ReserveForFaces();
     size_t start = 0;
     while (start <= text_.size() && !failed_) {
+      if ((lineNumber_ & kLinesBetweenChecks) == 0 && !KeepGoing(start)) {
+        return LoadError{file_, 0, 0, "loading cancelled"};
+      }
       const size_t end = text_.find('\n', start);
       const size_t stop = end == std::string_view::npos ? text_.size() : end;
       ++lineNumber_;
@@ -107,10 +113,42 @@ class DatParser {
       return LoadError{file_, lineNumber_, 1,
                        "expected a 'Faces:' line after the vertices (found end of file)"};
     }
+    vertexLines_ = {};
+    vertexIndex_ = {};
     return std::move(mesh_);
   }
 
  private:
+  static constexpr int kLinesBetweenChecks = (1 << 14) - 1;
+
+  // Polls cancel and reports progress; false once cancelled.
+  bool KeepGoing(size_t position) const {
+    if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed)) return false;
+    if (progress_ && !text_.empty()) {
+      progress_(static_cast<double>(position) / static_cast<double>(text_.size()));
+    }
+    return true;
+  }
+
+  // Reserves the face lists once from counts of the text after 'Faces:', so
+  // they never grow by doubling (which held up to twice their size, plus a copy).
+  void ReserveForFaces() {
+    const size_t facesAt = text_.find("Faces:");
+    if (facesAt == std::string_view::npos) return;
+    const std::string_view faces = text_.substr(facesAt);
+    size_t lines = 0, corners = 0;
+    bool inNumber = false;
+    for (const char c : faces) {
+      lines += c == '\n' ? 1 : 0;
+      const bool digit = IsDigit(c);
+      corners += digit && !inNumber ? 1 : 0;
+      inNumber = digit;
+    }
+    mesh_.faceCorners.reserve(corners);
+    mesh_.edgeHidden.reserve(corners);
+    mesh_.faceStarts.reserve(lines + 2);
+  }
+
   void Fail(int column, std::string message) {
     if (failed_) return;
     failed_ = true;
@@ -276,6 +314,8 @@ class DatParser {
 
   std::string_view text_;
   std::string file_;
+  const std::atomic<bool>* cancel_;
+  const std::function<void(double)>& progress_;
   Mesh mesh_;
   int lineNumber_ = 0;
   bool inFaces_ = false;
@@ -291,12 +331,18 @@ class DatParser {
 }  // namespace
 
 Loaded<Mesh> ParseDat(std::string_view text, const std::string& fileName) {
+  return ParseDat(text, fileName, nullptr, {});
+}
+
+Loaded<Mesh> ParseDat(std::string_view text, const std::string& fileName,
+                      const std::atomic<bool>* cancel,
+                      const std::function<void(double)>& progress) {
   // A UTF-8 byte order mark (some Windows editors write one) is not content;
   // columns on line 1 count from after it, as an editor shows them.
   constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
   if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
     text.remove_prefix(kByteOrderMark.size());
-  return DatParser(text, fileName).Run();
+  return DatParser(text, fileName, cancel, progress).Run();
 }
 
 }  // namespace termshade

@@ -1,5 +1,6 @@
 #include "io/LoadError.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace termshade {
@@ -14,7 +15,9 @@ std::string LoadError::ToString() const {
       out += std::to_string(column);
     }
   }
-  return out + ": " + message;
+  // Messages quote file content and importers' text: escaped too (escaping
+  // is idempotent, so already escaped text stays as it is).
+  return out + ": " + SanitizeForTerminal(message, 1000);
 }
 
 std::string SanitizeForTerminal(std::string_view text, size_t maxLength) {
@@ -32,6 +35,20 @@ std::string SanitizeForTerminal(std::string_view text, size_t maxLength) {
       std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
       out += escaped;
     }
+  }
+  return out;
+}
+
+std::string SanitizeLinesForTerminal(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    out += SanitizeForTerminal(text.substr(start, end - start), text.size() * 4 + 4);
+    if (end == text.size()) break;
+    out += '\n';
+    start = end + 1;
   }
   return out;
 }

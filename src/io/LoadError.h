@@ -37,4 +37,8 @@ class Loaded {
 /// become \xNN, so no escape sequence reaches a terminal.
 std::string SanitizeForTerminal(std::string_view text, size_t maxLength = 200);
 
+/// As SanitizeForTerminal, line by line: newlines stay, nothing is cut short
+/// (help text, multi-line messages).
+std::string SanitizeLinesForTerminal(std::string_view text);
+
 }  // namespace termshade

@@ -1,102 +1,193 @@
 #include "io/ModelLoader.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
+#include <unistd.h>
 
 #include <algorithm>
-#include <assimp/Importer.hpp>
-#include <cctype>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <new>
 
+#include "io/AssimpImport.h"
+#include "io/ContentSniff.h"
 #include "io/DatReader.h"
+#include "io/LoadBudget.h"
+#include "io/RegularFile.h"
 
 namespace termshade {
 namespace {
 
-std::string LowerExtension(const std::string& path) {
-  const size_t dot = path.find_last_of('.');
-  const size_t slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
+// Formats that are ZIP archives inside, so a ZIP signature is no reason to refuse them.
+bool IsZipBasedFormat(const std::string& format) {
+  return format == "3mf" || format == "zae" || format == "pk3" || format == "zip" ||
+         format == "amf" || format == "ifczip";
+}
+
+std::string Normalized(std::string format) {
+  if (!format.empty() && format.front() == '.') format.erase(0, 1);
+  std::transform(format.begin(), format.end(), format.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
+  return format;
 }
 
-Loaded<std::string> ReadWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return LoadError{path, 0, 0, std::string("cannot open: ") + std::strerror(errno)};
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) return LoadError{path, 0, 0, "cannot read (not a regular file?)"};
-  if (static_cast<size_t>(size) > kMaxModelFileBytes) {
-    return LoadError{path, 0, 0, "file is larger than 512 MiB"};
-  }
-  in.seekg(0, std::ios::beg);
-  std::string text(static_cast<size_t>(size), '\0');
-  if (!in.read(text.data(), size)) return LoadError{path, 0, 0, "cannot read the whole file"};
-  return text;
-}
+// Where a model was read from, and what its references may reach.
+struct ModelPlace {
+  std::string displayName;  ///< as the user gave it
+  std::string folder;       ///< canonical; empty for standard input
+  std::string canonical;    ///< the model's canonical path; empty for standard input
+};
 
-void AppendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, Mesh& out) {
-  const aiMatrix4x4 transform = parent * node.mTransformation;
-  for (unsigned m = 0; m < node.mNumMeshes; ++m) {
-    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
-    const auto base = static_cast<uint32_t>(out.verticesFile.size());
-    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-      const aiVector3D p = transform * mesh.mVertices[v];
-      out.verticesFile.push_back({p.x, p.y, p.z});
-    }
-    std::vector<uint32_t> corners;
-    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-      const aiFace& face = mesh.mFaces[f];
-      corners.assign(face.mIndices, face.mIndices + face.mNumIndices);
-      for (uint32_t& c : corners) c += base;
-      if (corners.size() >= 3) {
-        out.AddFace(corners);
-      } else if (corners.size() == 2) {
-        out.segments.push_back({corners[0], corners[1]});
-      }
-    }
+Loaded<Mesh> LoadDat(std::string_view bytes, const ModelPlace& place, const LoadOptions& options) {
+  const auto needed = static_cast<double>(EstimateImportBytes("dat", bytes.size()));
+  if (needed > static_cast<double>(options.memoryBudgetBytes)) {
+    return LoadError{place.displayName, 0, 0, OverBudgetMessage(needed, options.memoryBudgetBytes)};
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) {
-    AppendNode(scene, *node.mChildren[c], transform, out);
-  }
-}
-
-Loaded<Mesh> ImportWithAssimp(const std::string& path, const std::string& bytes) {
-  Assimp::Importer importer;
-  const std::string ext = LowerExtension(path);
-  const aiScene* scene =
-      importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_JoinIdenticalVertices,
-                                  ext.size() > 1 ? ext.c_str() + 1 : "");
-  if (scene == nullptr || scene->mRootNode == nullptr) {
-    return LoadError{path, 0, 0, "cannot import: " + std::string(importer.GetErrorString())};
-  }
-  Mesh mesh;
-  mesh.name = path;
-  AppendNode(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
-  if (mesh.FaceCount() == 0) return LoadError{path, 0, 0, "the file holds no polygons"};
+  Loaded<Mesh> mesh = ParseDat(bytes, place.displayName, options.cancel, options.progress);
+  if (mesh.Ok()) mesh.Value().upAxisFile = UpAxis::kPlusZ;
   return mesh;
+}
+
+Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const ModelPlace& place,
+                          const LoadOptions& options) {
+  const auto fail = [&](std::string message) {
+    return LoadError{place.displayName, 0, 0, std::move(message)};
+  };
+  // Step 1: counts in the header against the bytes that follow it.
+  if (format == "off" || format.empty()) {
+    if (auto problem = CheckHeaderCounts("off", bytes)) return fail(std::move(*problem));
+  }
+  if (auto problem = CheckHeaderCounts("ply", bytes)) return fail(std::move(*problem));
+  // Step 2: the import's memory against the budget.
+  const auto needed = static_cast<double>(EstimateImportBytes(format, bytes.size()));
+  if (needed > static_cast<double>(options.memoryBudgetBytes)) {
+    return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
+  }
+  // Step 3: the import, under a name with the format's extension (Assimp picks
+  // its importer by it; without one, it sniffs the content).
+  ImportSource source;
+  source.displayName = place.displayName;
+  source.folder = place.folder;
+  source.format = format;
+  if (!place.canonical.empty() && LowerExtension(place.canonical) == format) {
+    source.importName = place.canonical;
+  } else {
+    const std::string base = place.canonical.empty() ? "/standard-input" : place.canonical;
+    source.importName = format.empty() ? base : base + "." + format;
+  }
+  return ImportWithAssimp(source, std::move(bytes), options);
+}
+
+Loaded<Mesh> LoadBytes(std::string bytes, const ModelPlace& place, const LoadOptions& options) {
+  // Step 1: the format: the hint, the extension, else the content.
+  std::string format = Normalized(options.formatHint);
+  if (format.empty()) format = LowerExtension(place.displayName);
+  if (format == "dat") return LoadDat(bytes, place, options);
+  const bool known = AssimpKnowsExtension(format);
+  if (bytes.empty()) return LoadError{place.displayName, 0, 0, "the file is empty"};
+  if (const auto what = RecognisedNonModel(bytes)) {
+    if (!(IsZipBasedFormat(format) && what->find("ZIP") != std::string::npos)) {
+      return LoadError{place.displayName, 0, 0, "not a model file (looks like " + *what + ")"};
+    }
+  }
+  if (!known && LooksLikeDat(bytes)) return LoadDat(bytes, place, options);
+  return LoadImported(std::move(bytes), known ? format : "", place, options);
+}
+
+// The float stages of the renderer keep about 1e-30 to 1e30 model units
+// exact; a model whose size lies outside would draw blank or broken, so it is
+// refused with its size instead.
+Loaded<Mesh> WithDrawableSize(Loaded<Mesh> mesh) {
+  if (!mesh.Ok()) return mesh;
+  constexpr double kSmallest = 1e-30, kLargest = 1e30;
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const Vec3& p : mesh.Value().verticesFile) {
+    const double xyz[3] = {p.x, p.y, p.z};
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!std::isfinite(xyz[axis])) continue;
+      lo[axis] = std::min(lo[axis], xyz[axis]);
+      hi[axis] = std::max(hi[axis], xyz[axis]);
+    }
+  }
+  double size = 0.0, largest = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (hi[axis] < lo[axis]) continue;
+    size = std::max(size, hi[axis] - lo[axis]);
+    largest = std::max({largest, std::fabs(lo[axis]), std::fabs(hi[axis])});
+  }
+  if (size > kLargest || largest > kLargest || (size > 0.0 && size < kSmallest)) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "the model's size (%.3g model units, coordinates up to %.3g) is outside what "
+                  "can be drawn (1e-30 to 1e30)",
+                  size, largest);
+    return LoadError{mesh.Value().name, 0, 0, text};
+  }
+  return mesh;
+}
+
+Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
+  // Standard input: bounded by the budget, never a terminal.
+  if (path == "-") {
+    if (isatty(STDIN_FILENO) != 0) {
+      return LoadError{"-", 0, 0, "standard input is a terminal; pipe a model into it"};
+    }
+    Loaded<std::string> bytes = ReadStream(STDIN_FILENO, "-", options.memoryBudgetBytes, options.cancel);
+    if (!bytes.Ok()) return bytes.Error();
+    return LoadBytes(std::move(bytes.Value()), ModelPlace{"-", "", ""}, options);
+  }
+  // A file: regular only, no larger than the budget lets the smallest import be.
+  const auto refuseSize = [&](size_t size) -> std::optional<std::string> {
+    const auto needed = static_cast<double>(EstimateImportBytes("dat", size));
+    if (needed <= static_cast<double>(options.memoryBudgetBytes)) return std::nullopt;
+    return "the file is " + FormatBytes(static_cast<double>(size)) + "; " +
+           OverBudgetMessage(needed, options.memoryBudgetBytes);
+  };
+  Loaded<std::string> bytes = ReadRegularFile(path, refuseSize, options.cancel);
+  if (!bytes.Ok()) return bytes.Error();
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::canonical(path, error);
+  if (error) return LoadError{path, 0, 0, "cannot resolve the path: " + error.message()};
+  return LoadBytes(std::move(bytes.Value()),
+                   ModelPlace{path, canonical.parent_path().string(), canonical.string()}, options);
 }
 
 }  // namespace
 
-bool UsesImporter(const std::string& path) {
-  const std::string ext = LowerExtension(path);
-  if (ext.empty() || ext == ".dat") return false;
-  Assimp::Importer importer;
-  return importer.IsExtensionSupported(ext);
+size_t DefaultMemoryBudgetBytes() {
+  constexpr size_t kDefaultBudget = size_t{2} << 30;
+  const char* text = std::getenv("TERMSHADE_MEMORY_BUDGET");
+  if (text == nullptr) return kDefaultBudget;
+  return ParseByteCount(text).value_or(kDefaultBudget);
 }
 
-Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& /*options*/) {
-  Loaded<std::string> bytes = ReadWholeFile(path);
-  if (!bytes.Ok()) return bytes.Error();
-  if (UsesImporter(path)) return ImportWithAssimp(path, bytes.Value());
-  return ParseDat(bytes.Value(), path);
+bool UsesImporter(const std::string& path) {
+  const std::string ext = LowerExtension(path);
+  return ext != "dat" && AssimpKnowsExtension(ext);
+}
+
+Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
+                            const LoadOptions& options) {
+  try {
+    return WithDrawableSize(LoadBytes(std::move(bytes), ModelPlace{name, "", ""}, options));
+  } catch (const std::bad_alloc&) {
+    return LoadError{name, 0, 0, "ran out of memory while loading"};
+  } catch (const std::exception& e) {
+    return LoadError{name, 0, 0, std::string("cannot import: ") + e.what()};
+  }
+}
+
+Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& options) {
+  try {
+    return WithDrawableSize(LoadChecked(path, options));
+  } catch (const std::bad_alloc&) {
+    return LoadError{path, 0, 0,
+                     "ran out of memory while loading (the memory budget is " +
+                         FormatBytes(static_cast<double>(options.memoryBudgetBytes)) + ")"};
+  } catch (const std::exception& e) {
+    return LoadError{path, 0, 0, std::string("cannot import: ") + e.what()};
+  }
 }
 
 }  // namespace termshade

@@ -10,14 +10,17 @@
 
 namespace termshade {
 
-/// Largest model file read, so a wrong path to a huge file fails fast.
-constexpr size_t kMaxModelFileBytes = size_t{512} << 20;
+/// The memory budget when none is given: TERMSHADE_MEMORY_BUDGET ("4G",
+/// "512M", bytes; see ParseByteCount in io/LoadBudget.h) if set and valid, else 2 GiB.
+size_t DefaultMemoryBudgetBytes();
 
 /// Limits and hooks for one load.
 struct LoadOptions {
   /// Most memory the load may take, in bytes; a model needing more is refused
-  /// with a message saying how much it needs.
-  size_t memoryBudgetBytes = size_t{2} << 30;
+  /// with a message saying how much it needs. Checked before allocating: the
+  /// file's size times what its format's import takes per byte, header counts
+  /// against the bytes after the header, and the mesh's size before building it.
+  size_t memoryBudgetBytes = DefaultMemoryBudgetBytes();
   /// Polled while loading; once true, the load stops with a "cancelled" error.
   const std::atomic<bool>* cancel = nullptr;
   /// Called from the loading thread with the share done, in [0, 1], where known.
@@ -30,7 +33,19 @@ struct LoadOptions {
 /// Loads a model file: .dat by our own reader (located errors), and the
 /// common interchange formats (.obj, .stl, .ply, .off, .3ds, .dae, .gltf, ...)
 /// through the Open Asset Import Library, keeping polygons untriangulated.
+/// path "-" reads standard input. The format comes from options.formatHint,
+/// else the extension, else the content (.dat's shape, then Assimp's sniffing).
+/// Only regular files are read, and files the model references only from
+/// inside its own folder (SPEC 10). Every failure, out of memory included, is
+/// a LoadError naming the file.
 Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& options = {});
+
+/// Loads a model from bytes in memory (standard input, fuzzing): as
+/// LoadModelFile, with name in messages, the format from options.formatHint,
+/// else name's extension, else the content; the model has no folder, so any
+/// file it references is refused.
+Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
+                            const LoadOptions& options = {});
 
 /// True for file names whose extension LoadModelFile hands to the importer.
 bool UsesImporter(const std::string& path);

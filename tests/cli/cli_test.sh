@@ -85,6 +85,30 @@ check escape_in_file_name 1 "" -- "$bin" render "$work/$(printf 'evil\033[31mnam
 expect escape_never_reaches_stderr bash -c "! grep -q $'\x1b' '$work/err'"
 expect escape_shown_escaped grep -qF 'evil\x1B[31mname' "$work/err"
 
+# Hostile input and every source (issues 7 and 8).
+check stdin_dat 0 "" -- bash -c "'$bin' render - --size 20x8 <'$src/data/cube.dat'"
+check stdin_with_format 0 "" -- bash -c "'$bin' render - --input-format obj --size 20x8 <'$src/tests/models/good/quad_and_triangle.obj'"
+check stdin_png 1 "-: not a model file (looks like PNG image)" -- bash -c "'$bin' render - <'$src/tests/models/bad/png_image_without_extension'"
+check memory_budget 1 "more than the memory budget of 1.0 KiB" -- "$bin" render "$src/data/cube.dat" --memory-budget 1K
+check memory_budget_from_environment 1 "more than the memory budget of 2.0 KiB" -- env TERMSHADE_MEMORY_BUDGET=2K "$bin" render "$src/data/cube.dat"
+check bad_memory_budget 2 "--memory-budget" -- "$bin" render "$src/data/cube.dat" --memory-budget lots
+cp "$src/data/cube.dat" "$work/model.dat"
+check output_onto_model 2 "is the model itself" -- "$bin" render "$work/model.dat" -o "$work/model.dat"
+expect output_onto_model_keeps_model cmp -s "$work/model.dat" "$src/data/cube.dat"
+check output_full_disk 1 "No space left on device" -- "$bin" render "$src/data/cube.dat" -o /dev/full
+echo previous >"$work/kept.txt"
+check failed_render_keeps_output 1 "" -- "$bin" render "$src/tests/models/bad/undefined_vertex.dat" -o "$work/kept.txt"
+expect failed_render_keeps_output_content grep -qx previous "$work/kept.txt"
+check output_replaced 0 "" -- "$bin" render "$src/data/cube.dat" -o "$work/kept.txt" --size 10x4
+expect output_replaced_whole test "$(wc -l <"$work/kept.txt")" -eq 4
+expect output_leaves_no_temporary_file test "$(ls -A "$work" | grep -c '^\.kept')" -eq 0
+check escape_in_option_value 2 "--method" -- "$bin" render "$src/data/cube.dat" --method $'\e]0;x\a'
+expect escape_in_option_value_escaped bash -c "! grep -q $'\x1b' '$work/err' && grep -qF '\x1B]0;x\x07' '$work/err'"
+check hostile_argv0_help 0 "" -- bash -c "exec -a $'\e]0;x\a' '$bin' --help"
+expect hostile_argv0_help_escaped bash -c "! grep -q $'\x1b' '$work/out'"
+check bench_terminal_missing_model 1 "cannot open" -- "$bin" bench terminal "$work/NONEXISTENT"
+check refused_reference 1 "refused to read '/etc/passwd'" -- "$bin" render "$src/tests/models/bad/obj_mtllib_absolute_path.obj"
+
 # Bad usage: exit 2.
 check unknown_method 2 "--method" -- "$bin" render "$src/data/cube.dat" --method foo
 check bad_size 2 "--size" -- "$bin" render "$src/data/cube.dat" --size 0x5
@@ -115,7 +139,8 @@ while IFS= read -r command; do
   expect "examples_in_help_of_${command// /_}" grep -q '^Examples:' "$work/out"
   expect "examples_run_${command// /_}" grep -q "^  termshade${command:+ $command}" "$work/out"
 done <"$work/commands"
-check suggests_method 2 "did you mean --method?" -- "$bin" render "$src/data/cube.dat" --me wire
+check suggests_method 2 "did you mean --method?" -- "$bin" render "$src/data/cube.dat" --meth wire
+check suggests_every_extension 2 "did you mean --memory-budget or --method?" -- "$bin" render "$src/data/cube.dat" --me wire
 check suggests_mono 2 "did you mean --mono?" -- "$bin" --mnoo
 check suggests_seconds 2 "did you mean --seconds?" -- "$bin" bench methods --secs=1
 check no_wild_suggestion 2 "" -- "$bin" render "$src/data/cube.dat" --zzzzzzzzzz

@@ -1,13 +1,32 @@
 #!/usr/bin/env bash
-# Builds the .dat fuzzer (clang, ASan, UBSan) and runs it for SECONDS (default 60)
-# from a seed corpus of the shipped scenes and test models.
+# Builds the fuzzers (clang, ASan, UBSan) and runs them for SECONDS in total
+# (default 60), split between them: the .dat reader and pipeline (dat_fuzzer),
+# and the Assimp path of the model loader (model_fuzzer: OBJ, PLY, STL, OFF,
+# glTF, GLB, COLLADA, unnamed content), each from a seed corpus of our files.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
+datSeconds=$((seconds / 2))
+modelSeconds=$((seconds - datSeconds))
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
-corpus=$(mktemp -d)
-trap 'rm -rf "$corpus"' EXIT
-cp data/*.dat tests/models/good/*.dat tests/models/bad/*.dat "$corpus"/
-./build-fuzz/dat_fuzzer -artifact_prefix="${ARTIFACTS:-$corpus/}" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
-  -print_final_stats=1 "$corpus"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir "$work/dat" "$work/model"
+cp data/*.dat tests/models/good/*.dat tests/models/bad/*.dat "$work/dat"/
+# Model seeds: the first byte picks the format (index into model_fuzzer's kNames).
+seed() {  # seed INDEX FILE
+  { printf "\\x$(printf %02x "$1")"; head -c 4000 "$2"; } >"$work/model/$(basename "$2").$1"
+}
+for f in tests/models/good/*.obj tests/models/bad/*.obj; do seed 0 "$f"; done
+for f in tests/models/bad/*.ply; do seed 1 "$f"; done
+for f in tests/models/bad/*.off; do seed 3 "$f"; done
+for f in tests/models/bad/*.gltf; do seed 4 "$f"; done
+printf '\x02solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n' >"$work/model/ascii.stl"
+printf '\x03OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$work/model/triangle.off"
+run() {  # run FUZZER SECONDS CORPUS
+  "./build-fuzz/$1" -artifact_prefix="${ARTIFACTS:-$work/}" -max_total_time="$2" -max_len=4096 \
+    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "$3"
+}
+run dat_fuzzer "$datSeconds" "$work/dat"
+run model_fuzzer "$modelSeconds" "$work/model"

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <assimp/IOSystem.hpp>
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace termshade {
+
+/// Assimp's file access for one model: the model file itself is served from
+/// bytes already read, and every file an importer asks for (OBJ mtllib, glTF
+/// buffers and images, ...) is opened only if it is a regular file inside the
+/// model's folder (after resolving `..` and symbolic links). Relative names
+/// resolve against that folder, never the working directory. The first
+/// refusal is kept so the loader can name the reference in its message.
+class ConfinedIOSystem : public Assimp::IOSystem {
+ public:
+  /// modelName: the name handed to Assimp's ReadFile; folder: the canonical
+  /// folder references must stay in (empty: no reference is allowed, as for
+  /// standard input). maxBytes bounds all bytes read, the model's included.
+  ConfinedIOSystem(std::string modelName, std::string modelBytes, std::string folder,
+                   size_t maxBytes, const std::atomic<bool>* cancel);
+
+  bool Exists(const char* file) const override;
+  char getOsSeparator() const override { return '/'; }
+  Assimp::IOStream* Open(const char* file, const char* mode) override;
+  void Close(Assimp::IOStream* stream) override;
+
+  /// Why the first refused reference was refused ("'../x.bin' leaves the model's folder").
+  const std::optional<std::string>& Refusal() const { return refusal_; }
+
+ private:
+  // The canonical path of a reference inside the folder, or a reason for refusing it.
+  bool Resolve(const std::string& name, std::string& resolved, std::string& reason) const;
+  void Refuse(const std::string& name, const std::string& reason);
+
+  std::string modelName_;
+  std::shared_ptr<const std::string> modelBytes_;
+  std::string folder_;
+  size_t bytesLeft_;
+  const std::atomic<bool>* cancel_;
+  std::optional<std::string> refusal_;
+};
+
+}  // namespace termshade

@@ -1,0 +1,216 @@
+// The model loader's hostile-input rules and what it takes from files:
+// messages for each class of bad file, references kept inside the model's
+// folder, content sniffing, budget, cancel and progress, colours and up axis.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+
+#include "io/LoadBudget.h"
+#include "io/ModelLoader.h"
+#include "support/TestSupport.h"
+
+namespace termshade {
+namespace {
+
+using test::SourcePath;
+
+std::string ErrorOf(const std::string& relative, const LoadOptions& options = {}) {
+  Loaded<Mesh> mesh = LoadModelFile(SourcePath(relative), options);
+  EXPECT_FALSE(mesh.Ok()) << relative << " loaded";
+  return mesh.Ok() ? "" : mesh.Error().ToString();
+}
+
+Mesh Good(const std::string& relative) {
+  Loaded<Mesh> mesh = LoadModelFile(SourcePath(relative));
+  EXPECT_TRUE(mesh.Ok()) << (mesh.Ok() ? "" : mesh.Error().ToString());
+  return mesh.Ok() ? std::move(mesh.Value()) : Mesh{};
+}
+
+struct BadModel {
+  const char* name;
+  const char* message;  // what the message must contain, after the file name
+};
+
+void PrintTo(const BadModel& bad, std::ostream* out) {
+  *out << bad.name;
+}
+
+class HostileModels : public testing::TestWithParam<BadModel> {};
+
+TEST_P(HostileModels, AreRefusedWithAMessageNamingTheFile) {
+  const std::string path = SourcePath(std::string("tests/models/bad/") + GetParam().name);
+  const std::string error = ErrorOf(std::string("tests/models/bad/") + GetParam().name);
+  EXPECT_EQ(error.rfind(path + ": ", 0), 0U) << error;
+  EXPECT_NE(error.find(GetParam().message), std::string::npos) << error;
+  for (const char c : error) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << error;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadFiles, HostileModels,
+    testing::Values(
+        BadModel{"raw_null_child_node.raw", "A node of the scene-graph is nullptr"},
+        BadModel{"raw_null_child_node_with_texture.raw", "nullptr"},
+        BadModel{"ply_face_index_out_of_range.ply", "is out of range"},
+        BadModel{"ply_face_index_negative.ply", "is out of range"},
+        BadModel{"ply_header_claims_2e9_vertices.ply",
+                 "the header promises 2000000000 vertex, 1 face, more than the 27 bytes"},
+        BadModel{"off_counts_beyond_file_size.off", "the header promises 353535235358 vertices"},
+        BadModel{"off_header_counts_huge.off", "the header promises 900000000 vertices"},
+        BadModel{"obj_mtllib_absolute_path.obj", "refused to read '/etc/passwd': an absolute path"},
+        BadModel{"obj_mtllib_leaves_folder.obj",
+                 "refused to read '../../../../../../etc/passwd': a path that leaves the model's"},
+        BadModel{"gltf_buffer_uri_absolute_path.gltf", "refused to read '/etc/passwd'"},
+        BadModel{"gltf_buffer_uri_leaves_folder.gltf",
+                 "refused to read '../../../../../../../etc/passwd'"},
+        BadModel{"gltf_buffer_uri_file_scheme.gltf", "refused to read 'file:///etc/passwd': a URI"},
+        BadModel{"gltf_escape_bytes_in_uri.gltf", "\\x1B]0;pwned\\x07"},
+        BadModel{"empty_file.obj", "the file is empty"},
+        BadModel{"png_image_without_extension", "not a model file (looks like PNG image)"},
+        BadModel{"cube_edge_3.5e38_beyond_float.dat", "is outside what can be drawn"},
+        BadModel{"cube_edge_1e-100_below_float.dat", "is outside what can be drawn"}),
+    [](const testing::TestParamInfo<BadModel>& info) {
+      std::string name = info.param.name;
+      for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
+
+TEST(ModelLoader, AFolderIsNotAModel) {
+  EXPECT_EQ(ErrorOf("tests/models"), SourcePath("tests/models") + ": not a regular file but a folder");
+}
+
+TEST(ModelLoader, AFifoIsRefusedWithoutBlocking) {
+  const std::string fifo = testing::TempDir() + "/termshade_fifo.obj";
+  unlink(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  Loaded<Mesh> mesh = LoadModelFile(fifo);
+  unlink(fifo.c_str());
+  ASSERT_FALSE(mesh.Ok());
+  EXPECT_EQ(mesh.Error().message, "not a regular file but a FIFO (named pipe)");
+}
+
+TEST(ModelLoader, ADeviceIsRefused) {
+  Loaded<Mesh> mesh = LoadModelFile("/dev/zero");
+  ASSERT_FALSE(mesh.Ok());
+  EXPECT_EQ(mesh.Error().message, "not a regular file but a character device");
+}
+
+TEST(ModelLoader, GltfWithExternalBufferLoadsFromAnyWorkingDirectory) {
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path("/");
+  const Mesh mesh = Good("tests/models/good/triangle_external_buffer.gltf");
+  std::filesystem::current_path(before);
+  EXPECT_EQ(mesh.FaceCount(), 1U);
+}
+
+TEST(ModelLoader, FaceColoursComeFromTheMaterials) {
+  const Mesh mesh = Good("tests/models/good/two_colours_from_mtl.obj");
+  ASSERT_EQ(mesh.faceColors.size(), 2U);
+  EXPECT_EQ(mesh.faceColors[0], (Rgb{1, 0, 0}));
+  EXPECT_EQ(mesh.faceColors[1], (Rgb{0, 0, 1}));
+}
+
+TEST(ModelLoader, FaceColoursComeFromGltfBaseColor) {
+  const Mesh mesh = Good("tests/models/good/triangle_external_buffer.gltf");
+  ASSERT_EQ(mesh.faceColors.size(), 1U);
+  EXPECT_EQ(mesh.faceColors[0], (Rgb{0.2f, 0.4f, 0.6f}));
+}
+
+TEST(ModelLoader, VertexColoursAreAveragedOverTheFace) {
+  const Mesh mesh = Good("tests/models/good/vertex_colours.obj");
+  ASSERT_EQ(mesh.faceColors.size(), 1U);
+  EXPECT_FLOAT_EQ(mesh.faceColors[0].r, 1.0f / 3);
+  EXPECT_FLOAT_EQ(mesh.faceColors[0].g, 1.0f / 3);
+  EXPECT_FLOAT_EQ(mesh.faceColors[0].b, 1.0f / 3);
+}
+
+TEST(ModelLoader, NoColourInTheFileLeavesFaceColoursEmpty) {
+  EXPECT_TRUE(Good("tests/models/good/quad_and_triangle.obj").faceColors.empty());
+  EXPECT_TRUE(Good("data/cube.dat").faceColors.empty());
+  for (const char* name : {"plain.ply", "plain.off"}) {
+    const std::string text =
+        std::string(name) == "plain.ply"
+            ? "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+              "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
+            : "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    Loaded<Mesh> mesh = LoadModelBytes(text, name);
+    ASSERT_TRUE(mesh.Ok()) << mesh.Error().ToString();
+    EXPECT_TRUE(mesh.Value().faceColors.empty()) << name;
+  }
+}
+
+TEST(ModelLoader, UpAxisFollowsTheFormat) {
+  EXPECT_EQ(Good("data/cube.dat").upAxisFile, UpAxis::kPlusZ);
+  EXPECT_EQ(Good("tests/models/good/quad_and_triangle.obj").upAxisFile, UpAxis::kPlusY);
+  EXPECT_EQ(Good("tests/models/good/triangle_external_buffer.gltf").upAxisFile, UpAxis::kPlusY);
+  Loaded<Mesh> stl = LoadModelBytes(
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nendsolid t\n",
+      "t.stl");
+  ASSERT_TRUE(stl.Ok()) << stl.Error().ToString();
+  EXPECT_EQ(stl.Value().upAxisFile, UpAxis::kPlusZ);
+}
+
+TEST(ModelLoader, ContentWithoutExtensionIsSniffed) {
+  EXPECT_TRUE(LoadModelBytes("1 0 0 0\n2 1 0 0\n3 0 1 0\nFaces:\n1 2 3 .\n", "model").Ok());
+  EXPECT_TRUE(LoadModelBytes("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "model").Ok());
+  const Loaded<Mesh> png = LoadModelBytes("\x89PNG\r\n\x1a\nrest", "picture");
+  ASSERT_FALSE(png.Ok());
+  EXPECT_EQ(png.Error().message, "not a model file (looks like PNG image)");
+}
+
+TEST(ModelLoader, ReferencesFromStandardInputAreRefused) {
+  Loaded<Mesh> mesh = LoadModelBytes("mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "-");
+  ASSERT_FALSE(mesh.Ok());
+  EXPECT_NE(mesh.Error().message.find("refused to read 'x.mtl'"), std::string::npos);
+}
+
+TEST(ModelLoader, AModelOverTheBudgetSaysHowMuchItNeeds) {
+  LoadOptions options;
+  options.memoryBudgetBytes = 1 << 20;
+  const std::string error = ErrorOf("data/sphere_cone.dat", options);
+  EXPECT_NE(error.find("loading it needs about"), std::string::npos) << error;
+  EXPECT_NE(error.find("more than the memory budget of 1.0 MiB"), std::string::npos) << error;
+}
+
+TEST(ModelLoader, CancelStopsTheLoad) {
+  std::atomic<bool> cancel{true};
+  LoadOptions options;
+  options.cancel = &cancel;
+  EXPECT_NE(ErrorOf("data/sphere_cone.dat", options).find("loading cancelled"), std::string::npos);
+  EXPECT_NE(ErrorOf("tests/models/good/quad_and_triangle.obj", options).find("loading cancelled"),
+            std::string::npos);
+}
+
+TEST(ModelLoader, ProgressIsReportedForOurReaderAndAssimp) {
+  for (const char* model : {"data/sphere_cone.dat", "tests/models/good/two_colours_from_mtl.obj"}) {
+    double last = -1.0;
+    int calls = 0;
+    LoadOptions options;
+    options.progress = [&](double share) {
+      EXPECT_GE(share, 0.0);
+      EXPECT_LE(share, 1.0);
+      last = share;
+      ++calls;
+    };
+    EXPECT_TRUE(LoadModelFile(SourcePath(model), options).Ok());
+    EXPECT_GT(calls, 0) << model;
+    EXPECT_GE(last, 0.0) << model;
+  }
+}
+
+TEST(LoadBudget, ParsesByteCounts) {
+  EXPECT_EQ(ParseByteCount("4G"), size_t{4} << 30);
+  EXPECT_EQ(ParseByteCount("512M"), size_t{512} << 20);
+  EXPECT_EQ(ParseByteCount("1.5GiB"), size_t{3} << 29);
+  EXPECT_EQ(ParseByteCount("1000"), size_t{1000});
+  EXPECT_FALSE(ParseByteCount("lots"));
+  EXPECT_FALSE(ParseByteCount("-1G"));
+  EXPECT_FALSE(ParseByteCount("4Q"));
+}
+
+}  // namespace
+}  // namespace termshade
