@@ -14,6 +14,7 @@
 #include "io/ContentSniff.h"
 #include "io/DatReader.h"
 #include "io/LoadBudget.h"
+#include "io/OwnReaders.h"
 #include "io/RegularFile.h"
 
 namespace termshade {
@@ -64,7 +65,14 @@ Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const Mo
   if (needed > static_cast<double>(options.memoryBudgetBytes)) {
     return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
   }
-  // Step 3: the import, under a name with the format's extension (Assimp picks
+  // Step 3: a dedicated reader where one takes the file.
+  if (!options.importerOnly) {
+    if (auto mesh =
+            ReadWithOwnReader(bytes, format, place.displayName, options.memoryBudgetBytes)) {
+      return std::move(*mesh);
+    }
+  }
+  // Step 4: the import, under a name with the format's extension (Assimp picks
   // its importer by it; without one, it sniffs the content).
   ImportSource source;
   source.displayName = place.displayName;
@@ -133,7 +141,8 @@ Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
     if (isatty(STDIN_FILENO) != 0) {
       return LoadError{"-", 0, 0, "standard input is a terminal; pipe a model into it"};
     }
-    Loaded<std::string> bytes = ReadStream(STDIN_FILENO, "-", options.memoryBudgetBytes, options.cancel);
+    Loaded<std::string> bytes =
+        ReadStream(STDIN_FILENO, "-", options.memoryBudgetBytes, options.cancel);
     if (!bytes.Ok()) return bytes.Error();
     return LoadBytes(std::move(bytes.Value()), ModelPlace{"-", "", ""}, options);
   }

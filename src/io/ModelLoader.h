@@ -28,6 +28,9 @@ struct LoadOptions {
   /// Format extension without the dot ("stl") for content that cannot be
   /// sniffed (standard input); empty: by extension, then by content.
   std::string formatHint;
+  /// Assimp even where a dedicated reader exists (binary STL, PLY, OBJ): the
+  /// reference those readers must agree with, for tests and benches.
+  bool importerOnly = false;
 };
 
 /// Loads a model file: .dat by our own reader (located errors), and the

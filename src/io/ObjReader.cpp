@@ -109,8 +109,10 @@ class LineCursor {
     const char* first = text_.data() + start;
     const auto result = std::from_chars(first, text_.data() + text_.size(), value);
     if (result.ec != std::errc{} || result.ptr == first) return false;
+    // Like Assimp, the number is the word's longest numeric beginning ("3.1+e2" is 3.1).
     position_ = static_cast<size_t>(result.ptr - text_.data());
-    return position_ >= text_.size() || IsBlank(text_[position_]) || text_[position_] == '#';
+    while (position_ < text_.size() && !IsBlank(text_[position_])) ++position_;
+    return true;
   }
 
   /// The position index of a corner word (v, v/vt, v//vn, v/vt/vn); the rest is skipped.

@@ -165,9 +165,8 @@ Loaded<Header> ParseHeader(std::string_view bytes, const std::string& path) {
         return HeaderError(path, lineNumber, "expected 'property TYPE NAME'");
       }
       header.elements.back().properties.push_back(std::move(property));
-    } else {
-      return HeaderError(path, lineNumber, "unknown header keyword");
     }
+    // Any other line is taken as a comment, as Assimp and Blender's writers do.
   }
   if (!sawFormat) return HeaderError(path, lineNumber, "the header has no 'format' line");
   header.dataOffset = position;

@@ -1,0 +1,36 @@
+#include "io/OwnReaders.h"
+
+#include "geometry/WeldVertices.h"
+#include "io/BinaryStlReader.h"
+#include "io/ObjReader.h"
+#include "io/PlyReader.h"
+
+namespace termshade {
+namespace {
+
+std::optional<Loaded<Mesh>> ReadByFormat(std::string_view bytes, const std::string& format,
+                                         const std::string& displayName, size_t memoryBudgetBytes) {
+  if (format == "stl") {
+    if (!IsBinaryStlLayout(bytes) || BinaryStlHasColours(bytes)) return std::nullopt;
+    return ReadBinaryStl(bytes, displayName);
+  }
+  if (format == "ply") return ReadPly(bytes, displayName, memoryBudgetBytes);
+  if (format == "obj") return ReadObj(bytes, displayName, memoryBudgetBytes);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std::string& format,
+                                              const std::string& displayName,
+                                              size_t memoryBudgetBytes) {
+  std::optional<Loaded<Mesh>> read = ReadByFormat(bytes, format, displayName, memoryBudgetBytes);
+  if (!read || !read->Ok()) return read;
+  Mesh& mesh = read->Value();
+  mesh.name = displayName;
+  mesh.upAxisFile = format == "stl" ? UpAxis::kPlusZ : UpAxis::kPlusY;
+  if (format != "stl") WeldExactPositions(mesh);  // the STL reader welds as it reads
+  return read;
+}
+
+}  // namespace termshade

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "geometry/Mesh.h"
+#include "io/LoadError.h"
+
+namespace termshade {
+
+/// The dedicated readers for the formats big scans come in: binary STL, PLY
+/// and geometry-only OBJ, faster and smaller than Assimp and giving the same
+/// mesh (Assimp stays the reference: see LoadOptions::importerOnly).
+/// `format` is the lower-case extension. nullopt when none of them takes the
+/// file (another format, ASCII STL, colours or materials), so the caller
+/// imports it with Assimp. Positions are welded as on the Assimp path, and
+/// the up axis is the format's convention (SPEC 10).
+std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std::string& format,
+                                              const std::string& displayName,
+                                              size_t memoryBudgetBytes);
+
+}  // namespace termshade

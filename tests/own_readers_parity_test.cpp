@@ -1,0 +1,70 @@
+// The dedicated STL, PLY and OBJ readers against the reference, Assimp: the
+// same frame and the same face seen in every cell, on every such test model
+// (tests/models, and the Assimp test models when installed).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/ModelLoader.h"
+#include "io/OwnReaders.h"
+#include "support/TestSupport.h"
+
+namespace termshade {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> ModelsWithOwnReaders() {
+  std::vector<std::string> paths;
+  for (const std::string& root :
+       {test::SourcePath("tests/models"), std::string("/usr/share/assimp/models")}) {
+    std::error_code error;
+    for (fs::recursive_directory_iterator it(root, error), end; !error && it != end;
+         it.increment(error)) {
+      if (!it->is_regular_file(error)) continue;
+      std::string ext = it->path().extension().string();
+      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (ext == ".stl" || ext == ".ply" || ext == ".obj") paths.push_back(it->path().string());
+    }
+  }
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+std::string FacesAndGlyphs(Mesh mesh) {
+  const Scene scene = PrepareScene(std::move(mesh));
+  const test::Frame frame = test::RenderFrame(scene, 0.3, 1.3, 60, 20, RenderOptions{});
+  std::string faces;
+  for (const uint32_t face : frame.cells.FaceNumbers()) faces += std::to_string(face) + ' ';
+  return frame.Text() + faces;
+}
+
+TEST(OwnReadersParity, SameFramesAsAssimpOnEveryTestModel) {
+  int compared = 0;
+  for (const std::string& path : ModelsWithOwnReaders()) {
+    const std::string bytes = test::ReadFile(path);
+    std::string format = fs::path(path).extension().string().substr(1);
+    for (char& c : format) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    auto own = ReadWithOwnReader(bytes, format, path, size_t{1} << 30);
+    if (!own) continue;  // the importer's file: nothing to compare
+    LoadOptions reference;
+    reference.importerOnly = true;
+    Loaded<Mesh> imported = LoadModelFile(path, reference);
+    if (!imported.Ok() || !own->Ok()) {
+      EXPECT_EQ(own->Ok(), imported.Ok())
+          << path << ": " << (own->Ok() ? imported.Error() : own->Error()).ToString();
+      continue;
+    }
+    ++compared;
+    EXPECT_EQ(own->Value().FaceCount(), imported.Value().FaceCount()) << path;
+    EXPECT_EQ(own->Value().upAxisFile, imported.Value().upAxisFile) << path;
+    EXPECT_EQ(FacesAndGlyphs(own->Value()), FacesAndGlyphs(imported.Value())) << path;
+  }
+  EXPECT_GE(compared, 1);
+  std::printf("compared %d models\n", compared);
+}
+
+}  // namespace
+}  // namespace termshade
