@@ -32,7 +32,8 @@ struct ChildRun {
   double peakMegabytes = 0.0;
 };
 
-ChildRun RunRenderChild(const LoadBenchOptions& options, const std::string& modelPath) {
+ChildRun RunRenderChild(const LoadBenchOptions& options, const std::string& modelPath,
+                        const std::string& reader) {
   const std::string size =
       std::to_string(options.widthCells) + "x" + std::to_string(options.heightCells);
   const Clock::time_point start = Clock::now();
@@ -41,7 +42,8 @@ ChildRun RunRenderChild(const LoadBenchOptions& options, const std::string& mode
     const int devNull = open("/dev/null", O_WRONLY);
     if (devNull >= 0) dup2(devNull, STDOUT_FILENO);
     execl(options.executablePath.c_str(), options.executablePath.c_str(), "render",
-          modelPath.c_str(), "--size", size.c_str(), static_cast<char*>(nullptr));
+          modelPath.c_str(), "--size", size.c_str(), "--reader", reader.c_str(),
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   ChildRun run;
@@ -108,9 +110,10 @@ int RunLoadBench(const LoadBenchOptions& options) {
     return 1;
   }
   std::printf(
-      "| model | file MB | load + first frame, wall s | CPU s | peak MB | frame ms, %dx%d |\n",
+      "| model | reader | file MB | load + first frame, wall s | CPU s | peak MB | frame ms, %dx%d "
+      "|\n",
       options.widthCells, options.heightCells);
-  std::printf("| --- | --- | --- | --- | --- | --- |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
   for (const size_t triangles : options.triangleCounts) {
     for (const std::string& format : options.formats) {
       const std::string path = WriteModel(directory, triangles, format);
@@ -118,27 +121,34 @@ int RunLoadBench(const LoadBenchOptions& options) {
         std::cerr << "termshade bench load: cannot write a model into the models' folder\n";
         return 1;
       }
-      std::vector<double> wall, cpu, peak;
+      // Readers take turns within each repeat, so both see the same machine.
+      const size_t readerCount = options.readers.size();
+      std::vector<std::vector<double>> wall(readerCount), cpu(readerCount), peak(readerCount);
       for (int r = 0; r < options.repeats; ++r) {
-        const ChildRun run = RunRenderChild(options, path);
-        if (!run.ok) {
-          std::cerr << "termshade bench load: rendering " << path << " failed\n";
-          return 1;
+        for (size_t k = 0; k < readerCount; ++k) {
+          const ChildRun run = RunRenderChild(options, path, options.readers[k]);
+          if (!run.ok) {
+            std::cerr << "termshade bench load: rendering " << path << " failed\n";
+            return 1;
+          }
+          wall[k].push_back(run.wallSeconds);
+          cpu[k].push_back(run.cpuSeconds);
+          peak[k].push_back(run.peakMegabytes);
         }
-        wall.push_back(run.wallSeconds);
-        cpu.push_back(run.cpuSeconds);
-        peak.push_back(run.peakMegabytes);
       }
       const double fileMb =
           static_cast<double>(std::filesystem::file_size(path, error)) / (1024.0 * 1024.0);
-      std::printf("| %zuk triangles, %s | %.0f | %.2f | %.2f | %.0f | %.2f |\n", triangles / 1000,
-                  format.c_str(), fileMb, Median(wall), Median(cpu), Median(peak),
-                  MedianFrameMs(options, path));
+      const double frameMs = MedianFrameMs(options, path);
+      for (size_t k = 0; k < readerCount; ++k) {
+        std::printf("| %zuk triangles, %s | %s | %.0f | %.2f | %.2f | %.0f | %.2f |\n",
+                    triangles / 1000, format.c_str(), options.readers[k].c_str(), fileMb,
+                    Median(wall[k]), Median(cpu[k]), Median(peak[k]), frameMs);
+      }
       std::fflush(stdout);
     }
   }
   std::printf(
-      "\nmedians of %d runs of `termshade render MODEL --size %dx%d` (a child process "
+      "\nmedians of %d runs of `termshade render MODEL --size %dx%d --reader R` (a child process "
       "each) and of 20 frames in-process; models in %s\n",
       options.repeats, options.widthCells, options.heightCells, directory.c_str());
   return 0;

@@ -10,6 +10,7 @@ namespace termshade {
 struct LoadBenchOptions {
   std::vector<size_t> triangleCounts{200000, 2000000};
   std::vector<std::string> formats{"obj", "stl", "ply"};
+  std::vector<std::string> readers{"auto", "assimp"};  ///< render --reader values, each a row
   int repeats = 3;  ///< runs of the whole command per file; medians are reported
   int widthCells = 160;
   int heightCells = 48;

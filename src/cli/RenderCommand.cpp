@@ -45,6 +45,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   // Step 2: the model.
   LoadOptions loadOptions;
   loadOptions.formatHint = options.inputFormat;
+  loadOptions.importerOnly = options.reader == "assimp";
   if (options.memoryBudgetBytes > 0) loadOptions.memoryBudgetBytes = options.memoryBudgetBytes;
   Loaded<Mesh> mesh = LoadModelFile(options.modelPath, loadOptions);
   if (!mesh.Ok()) {

@@ -26,6 +26,7 @@ struct RenderCommandOptions {
   bool noCull = false;
   std::string inputFormat;       ///< --input-format: extension for content that cannot be sniffed
   size_t memoryBudgetBytes = 0;  ///< --memory-budget; 0: DefaultMemoryBudgetBytes()
+  std::string reader = "auto";   ///< --reader auto|assimp
 };
 
 /// Runs the command; returns the process exit code (0 ok, 1 bad input, 2 bad usage).

@@ -185,6 +185,12 @@ int Run(int argc, char** argv) {
           "else 2G); a model needing more is refused")
       ->type_name("SIZE");
 
+  renderCommand
+      ->add_option("--reader", render.reader,
+                   "auto (default): dedicated readers for binary STL, PLY and OBJ, Assimp for "
+                   "the rest; assimp: Assimp for everything (the reference)")
+      ->check(CLI::IsMember({"auto", "assimp"}));
+
   // Scene files: termshade generate NAME [-o FILE]
   termshade::GenerateCommandOptions generate;
   CLI::App* generateCommand = app.add_subcommand(
@@ -194,8 +200,9 @@ int Run(int argc, char** argv) {
                    "scene name, 'all' (with -o DIRECTORY), or 'sphere' (see --triangles)")
       ->required();
   generateCommand
-      ->add_option("-o,--output", generate.outputPath,
-                   "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')")
+      ->add_option(
+          "-o,--output", generate.outputPath,
+          "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')")
       ->type_name("FILE");
   generateCommand
       ->add_option("--triangles", generate.triangles, "sphere: about N triangles (default 200000)")
@@ -252,6 +259,10 @@ int Run(int argc, char** argv) {
                           "model sizes in triangles (default 200000 2000000)");
   loadCommand->add_option("--formats", loadBench.formats, "obj, stl, ply (default all three)")
       ->check(CLI::IsMember({"obj", "stl", "ply"}));
+  loadCommand
+      ->add_option("--readers", loadBench.readers,
+                   "render --reader values to compare (default auto assimp)")
+      ->check(CLI::IsMember({"auto", "assimp"}));
   loadCommand->add_option("--repeats", loadBench.repeats, "runs per model (default 3)")
       ->check(CLI::Range(1, 100));
   loadCommand

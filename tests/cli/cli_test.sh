@@ -71,7 +71,8 @@ check render_ply_export 0 "" -- "$bin" render "$work/sphere.ply" --size 40x16
 expect sphere_triangle_count test "$(grep -c '^f ' "$work/sphere.obj")" -ge 1900
 check generate_unknown_extension 2 "extension" -- "$bin" generate sphere -o "$work/sphere.xyz"
 check bench_load 0 "" -- "$bin" bench load --triangles 2000 --formats stl --repeats 1 --dir "$work/bench"
-expect bench_load_reports_a_row grep -q '^| 2k triangles, stl |' "$work/out"
+expect bench_load_reports_a_row grep -q '^| 2k triangles, stl | auto |' "$work/out"
+expect bench_load_reports_assimp grep -q '^| 2k triangles, stl | assimp |' "$work/out"
 check obj_import 0 "" -- "$bin" render "$src/tests/models/good/quad_and_triangle.obj" --size 20x8
 
 # Bad input: exit 1 with file:line:col.
