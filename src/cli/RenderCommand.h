@@ -23,6 +23,10 @@ struct RenderCommandOptions {
   int frames = 1;
   double stepRadians = 0.1;
   bool noCull = false;
+  /// --color: none, 256, truecolor or auto; empty: the command's default
+  /// (render: 256, so dumps do not depend on the environment; viewer: auto).
+  std::string colour;
+  bool mono = false;  ///< --mono: --color none
 };
 
 /// Runs the command; returns the process exit code (0 ok, 1 bad input, 2 bad usage).
