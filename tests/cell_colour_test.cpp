@@ -21,9 +21,10 @@ constexpr Srgb8 kWhite{255, 255, 255};
 constexpr double kContrastFloor = 2.5;
 
 const std::vector<Rgb>& TestColours() {
-  static const std::vector<Rgb> colours{kDefaultFaceColour, {1, 1, 1},       {0, 0, 0},
-                                        {1, 1, 0},          {0, 0, 1},       {1, 0, 0},
-                                        {0, 1, 0},          {0.5F, 0.25F, 0}, {0.02F, 0.02F, 0.05F}};
+  static const std::vector<Rgb> colours{
+      kDefaultFaceColour, {1, 1, 1},        {0, 0, 0},
+      {1, 1, 0},          {0, 0, 1},        {1, 0, 0},
+      {0, 1, 0},          {0.5F, 0.25F, 0}, {0.02F, 0.02F, 0.05F}};
   return colours;
 }
 
@@ -38,8 +39,8 @@ TEST(CellColour, DarkestAndBrightestShadesStayVisibleOnDarkAndLightThemes) {
     for (const ColourMode mode : {ColourMode::kTrueColour, ColourMode::k256}) {
       for (const double intensity : {0.0, 0.25, 0.5, 0.75, 1.0}) {
         const TermColour colour = CellColour(face, intensity, mode);
-        const Srgb8 shown = mode == ColourMode::kTrueColour ? colour.rgb
-                                                            : Palette256Colour(colour.index);
+        const Srgb8 shown =
+            mode == ColourMode::kTrueColour ? colour.rgb : Palette256Colour(colour.index);
         EXPECT_GE(ContrastRatio(shown, kBlack), kContrastFloor)
             << face.r << " " << face.g << " " << face.b << " at " << intensity;
         EXPECT_GE(ContrastRatio(shown, kWhite), kContrastFloor)
@@ -147,16 +148,16 @@ TEST(AnsiFrame, CarriesEachFacesColour) {
   AppendAnsiFrame(frame.cells, {}, options.ramp.LevelCount(), ColourMode::k256, plain);
   std::set<std::string> sequences;
   const std::regex sgr("\x1b\\[38;5;([0-9]+)m");
-  for (auto it = std::sregex_iterator(plain.begin(), plain.end(), sgr); it != std::sregex_iterator();
-       ++it) {
+  for (auto it = std::sregex_iterator(plain.begin(), plain.end(), sgr);
+       it != std::sregex_iterator(); ++it) {
     sequences.insert((*it)[1]);
   }
   std::set<std::string> expected;
   for (int level = 0; level < options.ramp.LevelCount(); ++level) {
-    expected.insert(std::to_string(
-        CellColour(kDefaultFaceColour, IntensityForLevel(level, options.ramp.LevelCount()),
-                   ColourMode::k256)
-            .index));
+    expected.insert(std::to_string(CellColour(kDefaultFaceColour,
+                                              IntensityForLevel(level, options.ramp.LevelCount()),
+                                              ColourMode::k256)
+                                       .index));
   }
   for (const std::string& seen : sequences) EXPECT_TRUE(expected.count(seen)) << seen;
 }

@@ -201,7 +201,8 @@ TEST(ViewerStatus, DropsTheLeastUsefulFieldsFirst) {
   // The order fields leave in as the line narrows; each width keeps what
   // the wider one kept minus the next field.
   const std::vector<std::pair<int, std::vector<std::string>>> steps{
-      {145, {"verts"}},       {136, {"verts", " ms"}},
+      {145, {"verts"}},
+      {136, {"verts", " ms"}},
       {124, {"verts", " ms", "tris"}},
       {104, {"verts", " ms", "tris", "faces"}},
       {96, {"verts", " ms", "tris", "faces", "up +y"}},
@@ -210,9 +211,9 @@ TEST(ViewerStatus, DropsTheLeastUsefulFieldsFirst) {
   for (const auto& [width, gone] : steps) {
     const std::string line = ComposeViewerStatus(fields, width);
     EXPECT_EQ(line.size(), static_cast<size_t>(width));
-    for (const std::string& field : {std::string("verts"), std::string(" ms"), std::string("tris"),
-                                     std::string("faces"), std::string("up +y"),
-                                     std::string("zbuffer"), std::string("theta")}) {
+    for (const std::string& field :
+         {std::string("verts"), std::string(" ms"), std::string("tris"), std::string("faces"),
+          std::string("up +y"), std::string("zbuffer"), std::string("theta")}) {
       const bool dropped = std::find(gone.begin(), gone.end(), field) != gone.end();
       EXPECT_EQ(line.find(field) == std::string::npos, dropped)
           << width << ": " << field << " in '" << line << "'";

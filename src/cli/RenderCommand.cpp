@@ -31,9 +31,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   if (!format) return UsageError("--format must be text, ansi or json");
   if (const auto problem = ShadeRamp::Problem(options.ramp))
     return UsageError("--ramp: " + *problem);
-  const auto colourMode =
-      options.mono ? std::optional(ColourMode::kNone)
-                   : ParseColourMode(options.colour.empty() ? "256" : options.colour);
+  const auto colourMode = options.mono
+                              ? std::optional(ColourMode::kNone)
+                              : ParseColourMode(options.colour.empty() ? "256" : options.colour);
   if (!colourMode) return UsageError("--color must be none, 256, truecolor or auto");
   if (!std::isfinite(options.theta) || !std::isfinite(options.phi) ||
       !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {

@@ -114,8 +114,9 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   termshade::ViewerOptions viewer;
   viewer.modelPaths = models;
   if (cellAspectOption > 0.0) viewer.cellAspect = cellAspectOption;
-  viewer.colour = look.mono ? termshade::ColourMode::kNone
-                            : *termshade::ParseColourMode(look.colour.empty() ? "auto" : look.colour);
+  viewer.colour = look.mono
+                      ? termshade::ColourMode::kNone
+                      : *termshade::ParseColourMode(look.colour.empty() ? "auto" : look.colour);
   viewer.render.method = *termshade::ParseMethod(look.method);
   viewer.render.shade = *termshade::ParseShadeMode(look.shade);
   if (const auto problem = termshade::ShadeRamp::Problem(look.ramp)) {

@@ -36,7 +36,8 @@ uint8_t ToByte(double encoded) {
 double Distance(Srgb8 a, Srgb8 b) {
   const double meanRed = (a.r + b.r) / 2.0;
   const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-  return (2.0 + meanRed / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - meanRed) / 256.0) * db * db;
+  return (2.0 + meanRed / 256.0) * dr * dr + 4.0 * dg * dg +
+         (2.0 + (255.0 - meanRed) / 256.0) * db * db;
 }
 
 // Palette entries 16..255 within the luminance bounds, with their colours.

@@ -24,8 +24,8 @@ std::string_view ColourModeName(ColourMode mode) {
   return "none";
 }
 
-ColourMode AutoColourMode(std::string_view noColor, std::string_view colorTerm,
-                          int terminfoColours, bool terminfoDirect) {
+ColourMode AutoColourMode(std::string_view noColor, std::string_view colorTerm, int terminfoColours,
+                          bool terminfoDirect) {
   if (!noColor.empty()) return ColourMode::kNone;  // https://no-color.org
   if (colorTerm == "truecolor" || colorTerm == "24bit" || terminfoDirect) {
     return ColourMode::kTrueColour;

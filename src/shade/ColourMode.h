@@ -17,7 +17,7 @@ std::string_view ColourModeName(ColourMode mode);
 /// What `auto` means for a terminal: none when NO_COLOR is set (non-empty),
 /// truecolor when COLORTERM says truecolor/24bit or terminfo has direct
 /// colour (RGB or Tc), 256 when terminfo has 256 colours or more, else none.
-ColourMode AutoColourMode(std::string_view noColor, std::string_view colorTerm,
-                          int terminfoColours, bool terminfoDirect);
+ColourMode AutoColourMode(std::string_view noColor, std::string_view colorTerm, int terminfoColours,
+                          bool terminfoDirect);
 
 }  // namespace termshade

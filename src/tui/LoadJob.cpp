@@ -41,7 +41,7 @@ LoadJob::LoadJob(std::string path) : path_(std::move(path)), shared_(std::make_s
 void LoadJob::Work(const std::shared_ptr<Shared>& shared, const std::string& path) {
   // A stack for the fatal-signal handler, as the main thread has: a crash in
   // an importer still gives the terminal back.
-  std::vector<char> alternateStack(64 * 1024);
+  std::vector<char> alternateStack(size_t{64} * 1024);
   stack_t alternate{};
   alternate.ss_sp = alternateStack.data();
   alternate.ss_size = alternateStack.size();

@@ -28,7 +28,8 @@ std::string ComposeViewerStatus(const StatusFields& fields, int widthCells) {
     lead.minWidthCells = kLeadMinCells;
   }
   char faces[64], triangles[48], vertices[48], ms[32];
-  std::snprintf(faces, sizeof faces, "%s/%s faces", CompactCount(static_cast<size_t>(fields.facesVisible)).c_str(),
+  std::snprintf(faces, sizeof faces, "%s/%s faces",
+                CompactCount(static_cast<size_t>(fields.facesVisible)).c_str(),
                 CompactCount(fields.faces).c_str());
   std::snprintf(triangles, sizeof triangles, "%s tris",
                 CompactCount(static_cast<size_t>(fields.trianglesDrawn)).c_str());

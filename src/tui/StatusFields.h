@@ -7,11 +7,11 @@ namespace termshade {
 
 /// What the viewer's status line tells, as values (no terminal code).
 struct StatusFields {
-  std::string lead;       ///< a message, or the model's label; sanitized
+  std::string lead;         ///< a message, or the model's label; sanitized
   bool leadIsModel = true;  ///< a model label keeps its tail (file name, [i/n])
-  std::string view;       ///< "theta .. phi .. rho .."
-  std::string method;     ///< "zbuffer contrast"
-  std::string upAxis;     ///< "+z"; empty: not shown
+  std::string view;         ///< "theta .. phi .. rho .."
+  std::string method;       ///< "zbuffer contrast"
+  std::string upAxis;       ///< "+z"; empty: not shown
   size_t vertices = 0;
   size_t faces = 0;
   int facesVisible = 0;

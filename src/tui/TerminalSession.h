@@ -40,9 +40,9 @@ class TerminalSession {
   int SignalFd() const { return signalPipe_[0]; }
   /// The signals that arrived since the last call (drains the pipe).
   struct Signals {
-    int terminate = 0;       ///< SIGINT, SIGTERM, SIGHUP or SIGQUIT: its number, else 0
-    bool suspend = false;    ///< SIGTSTP: the user asked to stop (Ctrl-Z)
-    bool resumed = false;    ///< SIGCONT: the screen may have been drawn over
+    int terminate = 0;     ///< SIGINT, SIGTERM, SIGHUP or SIGQUIT: its number, else 0
+    bool suspend = false;  ///< SIGTSTP: the user asked to stop (Ctrl-Z)
+    bool resumed = false;  ///< SIGCONT: the screen may have been drawn over
   };
   Signals TakeSignals();
   /// Gives the terminal back, stops the process as SIGTSTP would, and takes

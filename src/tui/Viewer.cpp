@@ -109,7 +109,8 @@ class EventLoop {
                                                                                 Clock::now());
         timeoutMs = static_cast<int>(std::max<long long>(0, wait.count()));
       }
-      if (job_) timeoutMs = timeoutMs < 0 ? kLoadProgressPollMs : std::min(timeoutMs, kLoadProgressPollMs);
+      if (job_)
+        timeoutMs = timeoutMs < 0 ? kLoadProgressPollMs : std::min(timeoutMs, kLoadProgressPollMs);
       pollfd fds[3] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
                        {job_ ? job_->ReadyFd() : -1, POLLIN, 0}};
@@ -409,7 +410,7 @@ class EventLoop {
   std::unique_ptr<LoadJob> job_;  ///< the load running on a worker, if any
   LoadRequest jobRequest_;
   std::string shownLoadingText_;  ///< what the status line last said of it
-  int completionMatches_ = 1;  ///< names the last Tab matched (1: no hint)
+  int completionMatches_ = 1;     ///< names the last Tab matched (1: no hint)
   bool prompting_ = false;
   bool dirty_ = true;
   bool dragging_ = false;
