@@ -56,8 +56,9 @@ std::string UpAxisLabel(UpAxis axis) {
 
 /// How the event loop ended.
 struct LoopOutcome {
-  int signalNumber = 0;        ///< the signal that ended it, or 0 (q)
-  bool abandonedLoad = false;  ///< a worker was still loading: leave with _Exit
+  int signalNumber = 0;          ///< the signal that ended it, or 0 (q)
+  bool abandonedLoad = false;    ///< a worker was still loading: leave with _Exit
+  std::string cancelledStart;    ///< the first model's load cancelled by Esc: its name
 };
 
 std::optional<NamedKey> NamedKeyFor(int key) {
@@ -98,7 +99,7 @@ class EventLoop {
   LoopOutcome Run() {
     LoopOutcome outcome;
     auto nextTurntableFrame = Clock::now();
-    while (!state_.QuitRequested()) {
+    while (!state_.QuitRequested() && !state_.StartError()) {
       StartRequestedLoad();
       if (dirty_) Draw();
       // Step 1: sleep until input, a signal, a finished load, or the next
@@ -133,7 +134,8 @@ class EventLoop {
       }
     }
     // A worker still reading a file is asked to stop and left to end alone.
-    outcome.abandonedLoad = job_ && job_->Abandoned();
+    outcome.abandonedLoad = abandonedLoad_ || (job_ && job_->Abandoned());
+    if (cancelledStart_) outcome.cancelledStart = cancelledName_;
     job_.reset();
     return outcome;
   }
@@ -159,6 +161,8 @@ class EventLoop {
 
   void CancelLoad() {
     const std::string name = LoadName();
+    cancelledName_ = name;
+    abandonedLoad_ = abandonedLoad_ || job_->Abandoned();
     job_.reset();  // asks the loader to stop; its result, if any, is dropped
     state_.SetMessage("cancelled loading " + name);
     dirty_ = true;
@@ -226,6 +230,10 @@ class EventLoop {
         action = ViewerAction::kToggleLightMode;
       } else if (*named == NamedKey::kEscape && job_) {
         CancelLoad();
+        if (!state_.HasModel()) {  // nothing to show: the viewer ends
+          cancelledStart_ = true;
+          state_.Apply(ViewerAction::kQuit);
+        }
         return;
       }
     } else if (key >= 0 && key < 128) {
@@ -338,6 +346,16 @@ class EventLoop {
       writer_.Present(grid_, std::nullopt);
       return;
     }
+    if (!state_.HasModel()) {  // the first model is loading: only the status line
+      grid_.Clear();
+      shownLoadingText_ = LoadingText();
+      painter_.PaintStatus(ComposeStatusLine({{shownLoadingText_, 0, false, Elision::kMiddle},
+                                              {"? help", 1, true}},
+                                             StatusCols(cols)),
+                           grid_);
+      writer_.Present(grid_, std::nullopt);
+      return;
+    }
     // Step 1: the frame, through the one shared pipeline.
     const int frameRows = rows - 1;
     cells_.Resize(cols, frameRows);
@@ -411,6 +429,9 @@ class EventLoop {
   LoadRequest jobRequest_;
   std::string shownLoadingText_;  ///< what the status line last said of it
   int completionMatches_ = 1;     ///< names the last Tab matched (1: no hint)
+  bool cancelledStart_ = false;   ///< Esc while the first model loaded
+  std::string cancelledName_;     ///< what the last Esc cancelled
+  bool abandonedLoad_ = false;    ///< a cancelled worker may still be running
   bool prompting_ = false;
   bool dirty_ = true;
   bool dragging_ = false;
@@ -429,10 +450,6 @@ int RunViewer(const ViewerOptions& options) {
   ViewerOptions effective = options;
   effective.colour = ResolveColourMode(options.colour);
   ViewerState state(effective, TerminalSession::ReportedCellAspect());
-  if (const auto error = state.LoadFirst()) {
-    std::cerr << error->ToString() << "\n";
-    return 1;
-  }
   std::setlocale(LC_ALL, "");
   const std::string codeset = nl_langinfo(CODESET);
   if (!options.render.ramp.IsAscii() && codeset != "UTF-8") {
@@ -450,16 +467,27 @@ int RunViewer(const ViewerOptions& options) {
                 << "\n";
       return 2;
     }
+    // The first model loads on the worker too: the screen says so at once.
+    state.RequestFirst();
     EventLoop loop(state, session);
     outcome = loop.Run();
   }  // the terminal is given back here
   // Killed: the signal's own exit status (128 + N), as a shell expects.
   if (outcome.signalNumber != 0) return TerminalSession::ReRaise(outcome.signalNumber);
-  if (outcome.abandonedLoad) {  // no static destructors under a running importer
-    std::fflush(nullptr);
-    std::_Exit(0);
+  int code = 0;
+  if (const auto& error = state.StartError()) {  // no model could be shown
+    std::cerr << error->ToString() << "\n";
+    code = 1;
+  } else if (!outcome.cancelledStart.empty()) {
+    std::cerr << "termshade: cancelled loading " << outcome.cancelledStart << "\n";
+    code = 1;
   }
-  return 0;
+  if (outcome.abandonedLoad) {  // no static destructors under a running importer
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }
 
 }  // namespace termshade

@@ -44,21 +44,14 @@ ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
   cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
 }
 
+void ViewerState::RequestFirst() {
+  pending_ = LoadRequest{paths_.front(), 0};
+}
+
 std::optional<LoadError> ViewerState::LoadFirst() {
-  std::optional<LoadError> firstError;
-  for (size_t index = 0; index < paths_.size(); ++index) {
-    Loaded<Scene> scene = LoadViewerScene(paths_[index]);
-    if (!scene.Ok()) {
-      if (!firstError) firstError = scene.Error();
-      message_ = StatusLineError(scene.Error());
-      continue;
-    }
-    scene_ = std::move(scene.Value());
-    current_ = stepFrom_ = index;
-    ResetView();
-    return std::nullopt;
-  }
-  return firstError;
+  RequestFirst();
+  while (pending_) RunPendingLoad();
+  return startError_;
 }
 
 void ViewerState::RequestOpen(const std::string& path) {
@@ -73,6 +66,17 @@ std::optional<LoadRequest> ViewerState::TakeLoadRequest() {
 
 void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
   if (request.index && *request.index >= paths_.size()) return;
+  if (!scene.Ok() && !hasModel_ && request.index) {  // starting: on to the next model
+    if (!firstError_) firstError_ = scene.Error();
+    message_ = StatusLineError(scene.Error());
+    const size_t next = *request.index + 1;
+    if (next < paths_.size()) {
+      pending_ = LoadRequest{paths_[next], next};
+    } else {
+      startError_ = firstError_;
+    }
+    return;
+  }
   if (!scene.Ok()) {
     message_ = StatusLineError(scene.Error());
     if (request.index) stepFrom_ = *request.index;  // the next n goes on from here
@@ -80,13 +84,14 @@ void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
   }
   if (request.index) {
     current_ = *request.index;
-    message_.clear();
+    if (hasModel_ || !firstError_) message_.clear();  // keep what was skipped on the way
   } else {
     paths_.insert(paths_.begin() + static_cast<std::ptrdiff_t>(current_ + 1), request.path);
     current_ += 1;
   }
   stepFrom_ = current_;
   scene_ = std::move(scene.Value());
+  hasModel_ = true;
   ResetView();
   if (!request.index) message_ = "opened " + ModelLabel();
 }

@@ -33,9 +33,16 @@ class ViewerState {
   /// terminalAspect: the cell aspect the terminal reports (0 if it does not).
   ViewerState(const ViewerOptions& options, double terminalAspect);
 
-  /// Opens the first model of the list that loads (a message names the
-  /// ones skipped); the error (if none loads) means the viewer cannot start.
+  /// Asks for the first model of the list; until one has loaded, a failed
+  /// load asks for the next one (a message names the ones skipped).
+  void RequestFirst();
+  /// RequestFirst, loaded here and now; the error (if none loads) means the
+  /// viewer cannot start.
   std::optional<LoadError> LoadFirst();
+  /// True once a model is shown.
+  bool HasModel() const { return hasModel_; }
+  /// Every model of the list failed before one was shown: the first error.
+  const std::optional<LoadError>& StartError() const { return startError_; }
   /// Asks for a model by path, to be added to the list after the current one.
   void RequestOpen(const std::string& path);
   /// The load asked for by RequestOpen or n/p, if any; taking it clears it.
@@ -86,6 +93,9 @@ class ViewerState {
   size_t current_ = 0;
   size_t stepFrom_ = 0;  ///< where n and p count from: the last model tried
   std::optional<LoadRequest> pending_;
+  bool hasModel_ = false;
+  std::optional<LoadError> firstError_;  ///< of the models tried before one loaded
+  std::optional<LoadError> startError_;
   Scene scene_;
   ViewParams view_;
   double fitRho_ = 1.0;

@@ -207,7 +207,22 @@ tm send-keys -t v r
 at_prompt "$work/big.dat"
 wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message the second time"
 wait_for 'opened .*big\.dat' 30 >/dev/null && pass || fail "the big model did not open"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null || fail "q after the big model"
+# The first model loads with the screen already taken: Esc cancels it (exit
+# 1, saying so) and Ctrl-C quits at once with its own status.
+run "clear; $bin $work/big.dat; echo status=\$?"
+wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message for the first model"
+tm send-keys -t v Escape
+wait_for 'cancelled loading .*big\.dat' 5 >/dev/null && pass || fail "Esc did not cancel the first load"
+wait_for '^status=1' 5 >/dev/null && pass || fail "cancelled first load: exit status not 1"
+run "clear; bash -c 'trap \"\" INT; $bin $work/big.dat; echo status=\$?'"
+wait_for 'loading .*big\.dat' 5 >/dev/null || fail "no loading message for the first model (Ctrl-C)"
+tm send-keys -t v C-c
+wait_for '^status=130' 3 >/dev/null && pass || fail "Ctrl-C during the first load: status not 130 at once"
 rm -f "$work/big.dat"
+run "clear; $bin"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start again after the big model"
 
 # 7c. A FIFO typed at 'o' is refused at once (regular files only), and the
 # viewer goes on.
