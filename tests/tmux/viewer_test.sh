@@ -228,7 +228,7 @@ wait_for '\? help' 5 >/dev/null || fail "viewer did not start again after the bi
 # viewer goes on.
 mkfifo "$work/pipe.obj"
 at_prompt "$work/pipe.obj"
-wait_for 'pipe\.obj: .*(regular|FIFO|fifo)' 3 >/dev/null && pass || fail "o on a FIFO did not fail at once"
+wait_for 'pipe\.obj: .*(regular|FIFO|fifo)' 3 >/dev/null && pass || fail "o on a FIFO did not fail at once (the loader must refuse what is not a regular file: issue 7 item 3)"
 tm send-keys -t v Escape
 tm send-keys -t v Right
 wait_for 'theta 0\.40' 5 >/dev/null && pass || fail "keys dead after o on a FIFO"
