@@ -11,6 +11,7 @@
 #include "tui/LineEditor.h"
 #include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
+#include "tui/StatusFields.h"
 #include "tui/StatusLine.h"
 #include "tui/ViewerState.h"
 
@@ -121,7 +122,114 @@ TEST(ViewerState, BadOpenKeepsTheModelAndSaysWhy) {
   state.OpenPath(test::SourcePath("data/cube.dat"));
   EXPECT_EQ(state.CurrentScene().FaceCount(), 6U);
   state.Apply(ViewerAction::kNextModel);
+  state.RunPendingLoad();
   EXPECT_EQ(state.ModelLabel(), "demo [1/2]");
+}
+
+TEST(ViewerState, NextAfterAFailedModelMovesOn) {
+  ViewerOptions options;
+  options.modelPaths = {test::SourcePath("data/cube.dat"),
+                        test::SourcePath("tests/models/bad/undefined_vertex.dat"),
+                        test::SourcePath("data/wedge.dat")};
+  ViewerState state(options, 0.0);
+  ASSERT_FALSE(state.LoadFirst().has_value());
+  state.Apply(ViewerAction::kNextModel);
+  state.RunPendingLoad();
+  EXPECT_EQ(state.Message(), "undefined_vertex.dat:14:7: vertex 12 is not defined (highest is 9)");
+  EXPECT_NE(state.ModelLabel().find("cube.dat [1/3]"), std::string::npos);  // still shown
+  state.Apply(ViewerAction::kNextModel);
+  state.RunPendingLoad();
+  EXPECT_NE(state.ModelLabel().find("wedge.dat [3/3]"), std::string::npos);
+  EXPECT_EQ(state.Message(), "");
+  // p from the third skips back over the bad one in two steps as well.
+  state.Apply(ViewerAction::kPreviousModel);
+  state.RunPendingLoad();
+  EXPECT_NE(state.Message().find("undefined_vertex.dat"), std::string::npos);
+  state.Apply(ViewerAction::kPreviousModel);
+  state.RunPendingLoad();
+  EXPECT_NE(state.ModelLabel().find("cube.dat [1/3]"), std::string::npos);
+}
+
+TEST(ViewerState, StartsAtTheFirstModelThatLoads) {
+  ViewerOptions options;
+  options.modelPaths = {test::SourcePath("tests/models/bad/undefined_vertex.dat"),
+                        test::SourcePath("data/cube.dat")};
+  ViewerState state(options, 0.0);
+  ASSERT_FALSE(state.LoadFirst().has_value());
+  EXPECT_NE(state.ModelLabel().find("cube.dat [2/2]"), std::string::npos);
+  EXPECT_NE(state.Message().find("undefined_vertex.dat:14:7"), std::string::npos);
+  ViewerOptions bad;
+  bad.modelPaths = {test::SourcePath("tests/models/bad/undefined_vertex.dat")};
+  ViewerState none(bad, 0.0);
+  EXPECT_TRUE(none.LoadFirst().has_value());
+}
+
+TEST(ViewerState, LoadsAreRequestedNotDone) {
+  ViewerState state = DemoState();
+  state.RequestOpen(test::SourcePath("data/cube.dat"));
+  EXPECT_EQ(state.ModelLabel(), "demo");  // nothing loaded until the event loop does it
+  const std::optional<LoadRequest> request = state.TakeLoadRequest();
+  ASSERT_TRUE(request.has_value());
+  EXPECT_FALSE(state.TakeLoadRequest().has_value());
+  state.FinishLoad(*request, LoadViewerScene(request->path));
+  EXPECT_EQ(state.CurrentScene().FaceCount(), 6U);
+  EXPECT_EQ(state.Message().substr(0, 7), "opened ");
+}
+
+StatusFields SampleFields() {
+  StatusFields fields;
+  fields.lead = "/home/someone/models/bunny.obj [2/3]";
+  fields.view = "theta 0.30 phi 1.30 rho 9.85";
+  fields.method = "zbuffer contrast";
+  fields.upAxis = "+y";
+  fields.vertices = 34834;
+  fields.faces = 69451;
+  fields.facesVisible = 30712;
+  fields.trianglesDrawn = 31000;
+  fields.frameMs = 1.25;
+  return fields;
+}
+
+TEST(ViewerStatus, ShowsEverythingWhenThereIsRoom) {
+  EXPECT_EQ(ComposeViewerStatus(SampleFields(), 160),
+            "/home/someone/models/bunny.obj [2/3] | zbuffer contrast | up +y | 30712/69451 faces | "
+            "31000 tris | 34834 verts   theta 0.30 phi 1.30 rho 9.85 | 1.25 ms | ? help");
+}
+
+TEST(ViewerStatus, DropsTheLeastUsefulFieldsFirst) {
+  const StatusFields fields = SampleFields();
+  // The order fields leave in as the line narrows; each width keeps what
+  // the wider one kept minus the next field.
+  const std::vector<std::pair<int, std::vector<std::string>>> steps{
+      {145, {"verts"}},
+      {136, {"verts", " ms"}},
+      {124, {"verts", " ms", "tris"}},
+      {104, {"verts", " ms", "tris", "faces"}},
+      {96, {"verts", " ms", "tris", "faces", "up +y"}},
+      {77, {"verts", " ms", "tris", "faces", "up +y", "zbuffer"}},
+      {50, {"verts", " ms", "tris", "faces", "up +y", "zbuffer", "theta"}}};
+  for (const auto& [width, gone] : steps) {
+    const std::string line = ComposeViewerStatus(fields, width);
+    EXPECT_EQ(line.size(), static_cast<size_t>(width));
+    for (const std::string& field :
+         {std::string("verts"), std::string(" ms"), std::string("tris"), std::string("faces"),
+          std::string("up +y"), std::string("zbuffer"), std::string("theta")}) {
+      const bool dropped = std::find(gone.begin(), gone.end(), field) != gone.end();
+      EXPECT_EQ(line.find(field) == std::string::npos, dropped)
+          << width << ": " << field << " in '" << line << "'";
+    }
+    EXPECT_NE(line.find("bunny.obj [2/3]"), std::string::npos) << line;
+    EXPECT_EQ(line.substr(line.size() - 6), "? help") << line;
+  }
+  // Narrower still: the path loses its front, the file name and "? help" stay.
+  EXPECT_EQ(ComposeViewerStatus(fields, 40), "...omeone/models/bunny.obj [2/3]  ? help");
+}
+
+TEST(ViewerStatus, CountsStayShort) {
+  EXPECT_EQ(CompactCount(950), "950");
+  EXPECT_EQ(CompactCount(99999), "99999");
+  EXPECT_EQ(CompactCount(123456), "123.5k");
+  EXPECT_EQ(CompactCount(2100000), "2.1M");
 }
 
 TEST(StatusLine, DropsTheLeastImportantSegmentsFirst) {

@@ -10,6 +10,7 @@
 #include "io/ModelLoader.h"
 #include "io/OutputFile.h"
 #include "raster/Renderer.h"
+#include "tui/TerminalColours.h"
 
 namespace termshade {
 namespace {
@@ -31,6 +32,10 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   if (!format) return UsageError("--format must be text, ansi or json");
   if (const auto problem = ShadeRamp::Problem(options.ramp))
     return UsageError("--ramp: " + *problem);
+  const auto colourMode = options.mono
+                              ? std::optional(ColourMode::kNone)
+                              : ParseColourMode(options.colour.empty() ? "256" : options.colour);
+  if (!colourMode) return UsageError("--color must be none, 256, truecolor or auto");
   if (!std::isfinite(options.theta) || !std::isfinite(options.phi) ||
       !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {
     return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
@@ -92,8 +97,10 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     renderer.Render(scene, camera, renderOptions, depth, cells);
     text.clear();
     if (*format == FrameFormat::kText) AppendTextFrame(cells, text);
-    if (*format == FrameFormat::kAnsi)
-      AppendAnsiFrame(cells, renderOptions.ramp.LevelCount(), text);
+    if (*format == FrameFormat::kAnsi) {
+      AppendAnsiFrame(cells, scene.mesh.faceColors, renderOptions.ramp.LevelCount(),
+                      ResolveColourMode(*colourMode), text);
+    }
     if (*format == FrameFormat::kJson) {
       AppendJsonFrame(cells, depth, scene, camera, renderOptions, text);
     }

@@ -27,6 +27,10 @@ struct RenderCommandOptions {
   std::string inputFormat;       ///< --input-format: extension for content that cannot be sniffed
   size_t memoryBudgetBytes = 0;  ///< --memory-budget; 0: DefaultMemoryBudgetBytes()
   std::string reader = "auto";   ///< --reader auto|assimp
+  /// --color: none, 256, truecolor or auto; empty: the command's default
+  /// (render: 256, so dumps do not depend on the environment; viewer: auto).
+  std::string colour;
+  bool mono = false;  ///< --mono: --color none
 };
 
 /// Runs the command; returns the process exit code (0 ok, 1 bad input, 2 bad usage).

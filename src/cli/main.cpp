@@ -107,14 +107,22 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
                      "(default .:-=+*#%@; block elements, box drawing, braille and Latin-1 too)");
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
+  command
+      .add_option("--color", options.colour,
+                  "cell colours: none, 256 (nearest xterm cube or grey entry), truecolor, or auto "
+                  "(from NO_COLOR, COLORTERM and terminfo; the viewer's default; render's is 256)")
+      ->check(CLI::IsMember({"none", "256", "truecolor", "24bit", "auto"}));
+  command.add_flag("--mono", options.mono, "no colour: --color none");
 }
 
 int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
-                  double cellAspectOption, bool mono) {
+                  double cellAspectOption) {
   termshade::ViewerOptions viewer;
   viewer.modelPaths = models;
   if (cellAspectOption > 0.0) viewer.cellAspect = cellAspectOption;
-  viewer.monochrome = mono;
+  viewer.colour = look.mono
+                      ? termshade::ColourMode::kNone
+                      : *termshade::ParseColourMode(look.colour.empty() ? "auto" : look.colour);
   viewer.render.method = *termshade::ParseMethod(look.method);
   viewer.render.shade = *termshade::ParseShadeMode(look.shade);
   if (const auto problem = termshade::ShadeRamp::Problem(look.ramp)) {
@@ -140,13 +148,11 @@ int Run(int argc, char** argv) {
   RenderCommandOptions viewerLook;
   std::vector<std::string> models;
   double viewerAspect = 0.0;
-  bool mono = false;
   app.add_option("models", models, "model files (.dat, or .obj .stl .ply .off ... via Assimp)")
       ->type_name("MODEL");
   app.add_option("--cell-aspect", viewerAspect,
                  "cell height / cell width (default: from the terminal, else 2.0)")
       ->check(CLI::Range(0.25, 8.0));
-  app.add_flag("--mono", mono, "no colour (also when NO_COLOR is set)");
   AddLookOptions(app, viewerLook);
 
   // Headless frames: termshade render MODEL [options]
@@ -294,7 +300,7 @@ int Run(int argc, char** argv) {
     loadBench.executablePath = SelfPath();
     return termshade::RunLoadBench(loadBench);
   }
-  return RunViewerFrom(viewerLook, models, viewerAspect, mono);
+  return RunViewerFrom(viewerLook, models, viewerAspect);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <charconv>
 
 #include "geometry/ViewingTransform.h"
-#include "shade/Palette.h"
+#include "shade/CellColour.h"
 #include "shade/Utf8.h"
 
 namespace termshade {
@@ -25,13 +25,30 @@ void AppendJsonString(std::string_view text, std::string& out) {
   out += '"';
 }
 
-void AppendSgr(int foreground, int background, std::string& out) {
-  out += "\x1b[38;5;";
-  AppendNumber(foreground, out);
-  out += ";48;5;";
-  AppendNumber(background, out);
+}  // namespace
+
+void AppendForegroundSgr(const TermColour& colour, std::string& out) {
+  switch (colour.kind) {
+    case TermColour::Kind::kDefault:
+      out += "\x1b[39m";
+      return;
+    case TermColour::Kind::kIndexed:
+      out += "\x1b[38;5;";
+      AppendNumber(static_cast<int>(colour.index), out);
+      break;
+    case TermColour::Kind::kRgb:
+      out += "\x1b[38;2;";
+      AppendNumber(static_cast<int>(colour.rgb.r), out);
+      out += ';';
+      AppendNumber(static_cast<int>(colour.rgb.g), out);
+      out += ';';
+      AppendNumber(static_cast<int>(colour.rgb.b), out);
+      break;
+  }
   out += 'm';
 }
+
+namespace {
 
 template <typename PerCell>
 void AppendGrid(const CellBuffer& cells, std::string_view key, PerCell perCell, std::string& out) {
@@ -65,19 +82,22 @@ void AppendTextFrame(const CellBuffer& cells, std::string& out) {
   }
 }
 
-void AppendAnsiFrame(const CellBuffer& cells, int levelCount, std::string& out) {
+void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, int levelCount,
+                     ColourMode mode, std::string& out) {
+  CellColourMap colours(faceColours, levelCount, mode);
   for (int row = 0; row < cells.HeightCells(); ++row) {
-    int current = -2;  // the level whose colours are set; -1 is the background
+    TermColour current;  // the terminal's default until a face sets one
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const int level = cells.Level(col, row);
-      if (level != current) {
-        const int foreground = level < 0 ? 0 : FaceColour256(level, levelCount);
-        AppendSgr(foreground, kBackground256, out);
-        current = level;
+      if (level >= 0 && mode != ColourMode::kNone) {  // the background keeps the default
+        const TermColour wanted = colours.ForFace(cells.FaceNumber(col, row), level);
+        if (!(wanted == current)) AppendForegroundSgr(wanted, out);
+        current = wanted;
       }
       AppendUtf8(out, cells.Glyph(col, row));
     }
-    out += "\x1b[0m\n";
+    if (!(current == TermColour{})) out += "\x1b[0m";
+    out += '\n';
   }
 }
 

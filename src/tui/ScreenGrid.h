@@ -5,24 +5,23 @@
 #include <string_view>
 #include <vector>
 
+#include "shade/CellColour.h"
+
 namespace termshade {
 
 /// How a screen cell looks besides its character.
 enum class CellStyle : uint8_t {
-  kPlain,       ///< the terminal's default colours
-  kReverse,     ///< status line and overlays
-  kBackground,  ///< the model's empty background (light blue with colour)
-  kFace,        ///< a face; the shade level says which colour
+  kPlain,    ///< the terminal's default colours (the model's background too)
+  kReverse,  ///< status line and overlays
+  kFace,     ///< a face, in its cell colour
 };
 
 /// One character cell of the terminal: a one-cell-wide code point and its style.
 struct ScreenCell {
   char32_t glyph = U' ';
   CellStyle style = CellStyle::kPlain;
-  int8_t level = 0;  ///< shade level, for kFace
-  bool operator==(const ScreenCell& other) const {
-    return glyph == other.glyph && style == other.style && level == other.level;
-  }
+  TermColour colour;  ///< foreground, for kFace
+  bool operator==(const ScreenCell& other) const = default;
 };
 
 /// What the terminal should show: the viewer composes a frame, the status

@@ -9,15 +9,19 @@
 
 namespace termshade {
 
-void ScreenPainter::PaintFrame(const CellBuffer& cells, ScreenGrid& grid) const {
+void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours,
+                               ScreenGrid& grid) const {
   const int rows = std::min(cells.HeightCells(), grid.HeightCells());
   const int cols = std::min(cells.WidthCells(), grid.WidthCells());
   for (int row = 0; row < rows; ++row) {
     for (int col = 0; col < cols; ++col) {
       const int level = cells.Level(col, row);
-      grid.At(col, row) = {cells.Glyph(col, row),
-                           level < 0 ? CellStyle::kBackground : CellStyle::kFace,
-                           static_cast<int8_t>(std::max(0, level))};
+      ScreenCell& cell = grid.At(col, row);
+      cell = {cells.Glyph(col, row), CellStyle::kPlain, TermColour{}};
+      if (level >= 0) {
+        cell.style = CellStyle::kFace;
+        cell.colour = colours.ForFace(cells.FaceNumber(col, row), level);
+      }
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "raster/CellBuffer.h"
+#include "shade/CellColour.h"
 #include "tui/LineEditor.h"
 #include "tui/ScreenGrid.h"
 
@@ -15,7 +16,8 @@ namespace termshade {
 /// terminal code here; TerminalWriter sends the grid.
 class ScreenPainter {
  public:
-  void PaintFrame(const CellBuffer& cells, ScreenGrid& grid) const;
+  /// The frame's cells, faces coloured by colours (nothing with ColourMode::kNone).
+  void PaintFrame(const CellBuffer& cells, CellColourMap& colours, ScreenGrid& grid) const;
   /// The bottom row in reverse video; the text is sanitized and cut to fit.
   void PaintStatus(const std::string& text, ScreenGrid& grid) const;
   /// The bottom row as a text field; returns where the cursor goes (col, row).

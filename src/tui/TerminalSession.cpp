@@ -3,8 +3,10 @@
 #include <curses.h>
 #include <fcntl.h>
 #include <sys/ioctl.h>
+#include <termios.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -20,11 +22,66 @@ std::atomic<int> gSignalWriteFd{-1};
 
 constexpr int kHandledSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGTSTP, SIGCONT};
 
+// Signals whose default action ends the process and that a handler can
+// catch, apart from those the event loop handles (SIGKILL and SIGSTOP
+// cannot be caught). Real-time signals are added at run time.
+constexpr int kFatalSignals[] = {SIGSEGV, SIGABRT, SIGBUS,  SIGFPE,  SIGILL,    SIGTRAP,
+                                 SIGSYS,  SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF,
+                                 SIGXCPU, SIGXFSZ, SIGPIPE, SIGPOLL, SIGPWR,    SIGSTKFLT};
+
+// What a fatal-signal handler needs to give the terminal back, prepared
+// while the session starts: the bytes to write and the termios to set.
+struct FatalRestore {
+  char reset[512];
+  size_t resetBytes = 0;
+  termios savedModes;
+  bool modesSaved = false;
+  std::atomic<bool> armed{false};  ///< the session holds the terminal now
+};
+// NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables)
+FatalRestore gFatalRestore;
+// A stack of its own, so a stack overflow's SIGSEGV can still run the handler.
+// NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables)
+alignas(16) char gAlternateStack[64 * 1024];
+
 extern "C" void OnHandledSignal(int signalNumber) {
   const int fd = gSignalWriteFd.load();
   if (fd >= 0) {
     const auto byte = static_cast<char>(signalNumber);
     [[maybe_unused]] const ssize_t written = write(fd, &byte, 1);
+  }
+}
+
+// Async-signal-safe only: write, tcsetattr, sigaction, sigprocmask, raise.
+extern "C" void OnFatalSignal(int signalNumber) {
+  if (gFatalRestore.armed.exchange(false)) {
+    const char* bytes = gFatalRestore.reset;
+    size_t left = gFatalRestore.resetBytes;
+    while (left > 0) {
+      const ssize_t n = write(STDOUT_FILENO, bytes, left);
+      if (n <= 0) break;
+      bytes += n;
+      left -= static_cast<size_t>(n);
+    }
+    if (gFatalRestore.modesSaved) tcsetattr(STDIN_FILENO, TCSANOW, &gFatalRestore.savedModes);
+  }
+  // The default action, with the signal unblocked: the exit status says 128 + N.
+  struct sigaction fallback {};
+  fallback.sa_handler = SIG_DFL;
+  sigemptyset(&fallback.sa_mask);
+  sigaction(signalNumber, &fallback, nullptr);
+  sigset_t unblock;
+  sigemptyset(&unblock);
+  sigaddset(&unblock, signalNumber);
+  sigprocmask(SIG_UNBLOCK, &unblock, nullptr);
+  raise(signalNumber);
+}
+
+template <typename PerSignal>
+void ForEachFatalSignal(PerSignal perSignal) {
+  for (int signalNumber : kFatalSignals) perSignal(signalNumber);
+  for (int signalNumber = SIGRTMIN; signalNumber <= SIGRTMAX; ++signalNumber) {
+    perSignal(signalNumber);
   }
 }
 
@@ -49,6 +106,7 @@ TerminalSession::TerminalSession() {
   }
   // A short escape delay makes a lone Esc quick; ncurses reads it at newterm.
   setenv("ESCDELAY", "25", 0);
+  gFatalRestore.modesSaved = tcgetattr(STDIN_FILENO, &gFatalRestore.savedModes) == 0;
 
   SCREEN* screen = newterm(nullptr, stdout, stdin);
   if (screen == nullptr) return;
@@ -70,9 +128,14 @@ TerminalSession::TerminalSession() {
                 BUTTON5_PRESSED,
             nullptr);
   mouseinterval(0);
-  if (has_colors() && start_color() == OK) {
-    colours_ = COLORS >= 256 ? ColourSupport::k256 : ColourSupport::kEight;
-  }
+  if (has_colors()) start_color();
+  // The way back for a fatal signal, made now: no allocation in the handler.
+  const std::string reset = TerminalWriter::ResetSequence();
+  gFatalRestore.resetBytes = std::min(reset.size(), sizeof gFatalRestore.reset);
+  std::memcpy(gFatalRestore.reset, reset.data(), gFatalRestore.resetBytes);
+  InstallFatalHandlers();
+  fatalHandlersInstalled_ = true;
+  gFatalRestore.armed.store(true);
 }
 
 int TerminalSession::NextKey() {
@@ -86,6 +149,8 @@ int TerminalSession::HeightCells() {
 }
 
 TerminalSession::~TerminalSession() {
+  gFatalRestore.armed.store(false);
+  if (fatalHandlersInstalled_) RestoreFatalHandlers();
   if (inputPad_ != nullptr) delwin(static_cast<WINDOW*>(inputPad_));
   if (screen_ != nullptr) {
     mousemask(0, nullptr);
@@ -107,11 +172,47 @@ void TerminalSession::InstallSignalHandlers() {
   sigemptyset(&action.sa_mask);
   action.sa_flags = 0;  // no SA_RESTART: a signal wakes the event loop's poll
   for (int signalNumber : kHandledSignals) sigaction(signalNumber, &action, nullptr);
-  std::signal(SIGPIPE, SIG_IGN);  // a dropped link shows up as a failed write, not a kill
 }
 
 void TerminalSession::RestoreSignalHandlers() {
   for (int signalNumber : kHandledSignals) std::signal(signalNumber, SIG_DFL);
+}
+
+void TerminalSession::InstallFatalHandlers() {
+  stack_t alternate{};
+  alternate.ss_sp = gAlternateStack;
+  alternate.ss_size = sizeof gAlternateStack;
+  sigaltstack(&alternate, nullptr);
+  struct sigaction action {};
+  action.sa_handler = OnFatalSignal;
+  sigfillset(&action.sa_mask);  // nothing else runs while the terminal is put back
+  action.sa_flags = SA_ONSTACK;
+  ForEachFatalSignal([&](int signalNumber) {
+    struct sigaction previous {};
+    // A signal the caller ignored (nohup, a shell's SIGPIPE) stays ignored.
+    if (sigaction(signalNumber, nullptr, &previous) == 0 && previous.sa_handler == SIG_IGN) return;
+    sigaction(signalNumber, &action, nullptr);
+  });
+}
+
+void TerminalSession::RestoreFatalHandlers() {
+  ForEachFatalSignal([](int signalNumber) {
+    struct sigaction previous {};
+    if (sigaction(signalNumber, nullptr, &previous) == 0 && previous.sa_handler == OnFatalSignal) {
+      std::signal(signalNumber, SIG_DFL);
+    }
+  });
+}
+
+int TerminalSession::ReRaise(int signalNumber) {
+  std::fflush(nullptr);
+  std::signal(signalNumber, SIG_DFL);
+  sigset_t unblock;
+  sigemptyset(&unblock);
+  sigaddset(&unblock, signalNumber);
+  sigprocmask(SIG_UNBLOCK, &unblock, nullptr);
+  raise(signalNumber);
+  return 128 + signalNumber;
 }
 
 TerminalSession::Signals TerminalSession::TakeSignals() {
@@ -125,7 +226,7 @@ TerminalSession::Signals TerminalSession::TakeSignals() {
       } else if (signalNumber == SIGCONT) {
         taken.resumed = true;
       } else {
-        taken.terminate = true;
+        taken.terminate = signalNumber;
       }
     }
   }
@@ -134,6 +235,7 @@ TerminalSession::Signals TerminalSession::TakeSignals() {
 
 void TerminalSession::Suspend() {
   // Step 1: the terminal back as the shell had it (endwin: modes, mouse, cursor).
+  gFatalRestore.armed.store(false);
   endwin();
   // Step 2: stop for real, as SIGTSTP's default action does; fg continues here.
   std::signal(SIGTSTP, SIG_DFL);
@@ -141,6 +243,7 @@ void TerminalSession::Suspend() {
   InstallSignalHandlers();
   // Step 3: the viewer's modes again (doupdate restores them, with mouse and keypad).
   doupdate();
+  gFatalRestore.armed.store(true);
 }
 
 double TerminalSession::ReportedCellAspect() {

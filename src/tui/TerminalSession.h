@@ -16,8 +16,13 @@ std::optional<std::string> TerminalProblem();
 /// reads and decodes input and knows the terminal; drawing goes through
 /// TerminalWriter.
 /// SIGINT, SIGTERM, SIGHUP and SIGQUIT are turned into a byte on a pipe that
-/// the event loop polls, so they end the loop and the destructor runs;
-/// SIGTSTP (Ctrl-Z) and SIGCONT reach the loop the same way.
+/// the event loop polls, so they end the loop and the destructor runs (the
+/// caller then re-raises the signal: ReRaise); SIGTSTP (Ctrl-Z) and SIGCONT
+/// reach the loop the same way. Every other signal whose default action ends
+/// the process (SIGSEGV, SIGABRT, SIGUSR1, SIGALRM, SIGPIPE...) restores the
+/// terminal inside its handler, async-signal-safely (a reset sequence made in
+/// advance, the saved termios), then takes its default action, so the exit
+/// status still says 128 + N.
 class TerminalSession {
  public:
   TerminalSession();
@@ -26,8 +31,6 @@ class TerminalSession {
   TerminalSession& operator=(const TerminalSession&) = delete;
 
   bool Ok() const { return screen_ != nullptr && inputPad_ != nullptr; }
-  /// Colours available (fixed xterm indices; no palette is ever redefined).
-  ColourSupport Colours() const { return colours_; }
   /// The next key (ncurses key codes, KEY_RESIZE and KEY_MOUSE included), or
   /// ERR when none is waiting. Read through a pad, so ncurses never draws.
   int NextKey();
@@ -37,9 +40,9 @@ class TerminalSession {
   int SignalFd() const { return signalPipe_[0]; }
   /// The signals that arrived since the last call (drains the pipe).
   struct Signals {
-    bool terminate = false;  ///< SIGINT, SIGTERM, SIGHUP or SIGQUIT
-    bool suspend = false;    ///< SIGTSTP: the user asked to stop (Ctrl-Z)
-    bool resumed = false;    ///< SIGCONT: the screen may have been drawn over
+    int terminate = 0;     ///< SIGINT, SIGTERM, SIGHUP or SIGQUIT: its number, else 0
+    bool suspend = false;  ///< SIGTSTP: the user asked to stop (Ctrl-Z)
+    bool resumed = false;  ///< SIGCONT: the screen may have been drawn over
   };
   Signals TakeSignals();
   /// Gives the terminal back, stops the process as SIGTSTP would, and takes
@@ -47,14 +50,19 @@ class TerminalSession {
   void Suspend();
   /// Cell height / width from the terminal's pixel size (TIOCGWINSZ), or 0.
   static double ReportedCellAspect();
+  /// Ends the process by signalNumber's default action (exit status 128 + N);
+  /// call once the session is gone. Returns 128 + N if the signal did not end it.
+  static int ReRaise(int signalNumber);
 
  private:
   void InstallSignalHandlers();
   void RestoreSignalHandlers();
+  static void InstallFatalHandlers();
+  static void RestoreFatalHandlers();
 
   void* screen_ = nullptr;    // SCREEN*, kept opaque so no header outside src/tui sees ncurses
   void* inputPad_ = nullptr;  // WINDOW*
-  ColourSupport colours_ = ColourSupport::kNone;
+  bool fatalHandlersInstalled_ = false;
   int signalPipe_[2] = {-1, -1};
 };
 

@@ -6,7 +6,7 @@
 
 #include <cerrno>
 
-#include "shade/Palette.h"
+#include "io/FrameFormats.h"
 #include "shade/Utf8.h"
 
 namespace termshade {
@@ -45,9 +45,6 @@ void AppendParameterized(std::string& out, const char* name, int a) {
   if (*format != '\0') AppendWithoutPadding(out, tiparm(format, a));
 }
 
-constexpr int kEightYellow = 3;
-constexpr int kEightCyan = 6;
-
 }  // namespace
 
 void TerminalWriter::AppendMove(int col, int row) {
@@ -55,73 +52,48 @@ void TerminalWriter::AppendMove(int col, int row) {
   if (*cup != '\0') AppendWithoutPadding(out_, tiparm(cup, row, col));
 }
 
-TerminalWriter::Attributes TerminalWriter::AttributesFor(const ScreenCell& cell, bool colour,
-                                                         int levelCount) const {
+TerminalWriter::Attributes TerminalWriter::AttributesFor(const ScreenCell& cell) {
   Attributes a;
-  if (cell.style == CellStyle::kReverse) {
-    a.reverse = true;
-    return a;
-  }
-  if (!colour || colours_ == ColourSupport::kNone || cell.style == CellStyle::kPlain) return a;
-  const bool face = cell.style == CellStyle::kFace;
-  if (colours_ == ColourSupport::k256) {
-    a.background = kBackground256;
-    if (face) a.foreground = FaceColour256(cell.level, levelCount);
-    return a;
-  }
-  // Eight colours: yellow on cyan, brightness from dim and bold.
-  a.background = kEightCyan;
-  if (face) {
-    a.foreground = kEightYellow;
-    a.dim = cell.level * 3 < levelCount;
-    a.bold = cell.level * 3 >= 2 * levelCount;
-  }
+  a.reverse = cell.style == CellStyle::kReverse;
+  if (cell.style == CellStyle::kFace) a.foreground = cell.colour;
   return a;
 }
 
 void TerminalWriter::AppendAttributes(const Attributes& wanted) {
   if (wanted == current_) return;
   // SGR can only add attributes; dropping one (or a colour) means a reset first.
-  const bool reset = (current_.reverse && !wanted.reverse) || (current_.bold && !wanted.bold) ||
-                     (current_.dim && !wanted.dim) ||
-                     (current_.foreground >= 0 && wanted.foreground < 0) ||
-                     (current_.background >= 0 && wanted.background < 0);
+  const bool reset = (current_.reverse && !wanted.reverse) ||
+                     (current_.foreground.kind != TermColour::Kind::kDefault &&
+                      wanted.foreground.kind == TermColour::Kind::kDefault);
   if (reset) {
     AppendCapability(out_, "sgr0");
     current_ = Attributes{};
   }
   if (wanted.reverse && !current_.reverse) AppendCapability(out_, "rev");
-  if (wanted.bold && !current_.bold) AppendCapability(out_, "bold");
-  if (wanted.dim && !current_.dim) AppendCapability(out_, "dim");
-  if (wanted.foreground >= 0 && wanted.foreground != current_.foreground) {
-    AppendParameterized(out_, "setaf", wanted.foreground);
-  }
-  if (wanted.background >= 0 && wanted.background != current_.background) {
-    AppendParameterized(out_, "setab", wanted.background);
+  if (!(wanted.foreground == current_.foreground)) {
+    if (wanted.foreground.kind == TermColour::Kind::kIndexed) {
+      AppendParameterized(out_, "setaf", wanted.foreground.index);
+    } else if (wanted.foreground.kind == TermColour::Kind::kRgb) {
+      AppendForegroundSgr(wanted.foreground, out_);  // no terminfo string for 24-bit colour
+    }
   }
   current_ = wanted;
 }
 
-void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount,
-                             std::optional<std::pair<int, int>> cursor) {
+void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int, int>> cursor) {
   out_.clear();
   const bool full = !valid_ || previous_.WidthCells() != grid.WidthCells() ||
-                    previous_.HeightCells() != grid.HeightCells() || colour != lastColour_;
-  lastColour_ = colour;
+                    previous_.HeightCells() != grid.HeightCells();
   if (cursorShown_) {
     AppendCapability(out_, "civis");
     cursorShown_ = false;
   }
   if (full) {
-    // Clear the screen; with back-colour-erase it clears to the background
-    // colour, and those cells need not be sent again.
+    // Clear the screen to the terminal's own background; blank cells need
+    // not be sent again.
     AppendCapability(out_, "sgr0");
     current_ = Attributes{};
-    ScreenCell cleared;
-    if (colour && colours_ != ColourSupport::kNone && tigetflag("bce") == 1) {
-      cleared.style = CellStyle::kBackground;
-      AppendAttributes(AttributesFor(cleared, colour, levelCount));
-    }
+    const ScreenCell cleared;
     AppendCapability(out_, "clear");
     previous_.Resize(grid.WidthCells(), grid.HeightCells());
     for (int row = 0; row < grid.HeightCells(); ++row) {
@@ -155,7 +127,7 @@ void TerminalWriter::Present(const ScreenGrid& grid, bool colour, int levelCount
       if (cursorRow != row || cursorCol != col) AppendMove(col, row);
       for (int c = col; c < end; ++c) {
         const ScreenCell& cell = grid.At(c, row);
-        AppendAttributes(AttributesFor(cell, colour, levelCount));
+        AppendAttributes(AttributesFor(cell));
         AppendUtf8(out_, cell.glyph);
       }
       cursorCol = end;
@@ -189,6 +161,17 @@ void TerminalWriter::Release() {
   WriteAll();
   current_ = Attributes{};
   cursorShown_ = true;
+}
+
+std::string TerminalWriter::ResetSequence() {
+  // Mouse reports off in every protocol ncurses may have asked for (X10,
+  // button-event, any-event, SGR 1006); no terminfo string undoes them all.
+  std::string out = "\x1b[?1000l\x1b[?1002l\x1b[?1003l\x1b[?1006l";
+  AppendCapability(out, "sgr0");
+  AppendCapability(out, "cnorm");
+  AppendCapability(out, "rmkx");
+  AppendCapability(out, "rmcup");
+  return out;
 }
 
 void TerminalWriter::WriteAll() {

@@ -8,15 +8,13 @@
 
 namespace termshade {
 
-enum class ColourSupport { kNone, kEight, k256 };
-
 /// Sends a ScreenGrid to the terminal: only the cells that changed since the
 /// last frame, encoded with the terminal's own terminfo strings, in one
 /// write(). (ncurses' doupdate() would do the diff too, but Debian's ncurses
 /// 6.4 flushes at every cursor move: one write() per changed row.)
 class TerminalWriter {
  public:
-  TerminalWriter(ColourSupport colours, int outputFd) : colours_(colours), outputFd_(outputFd) {}
+  explicit TerminalWriter(int outputFd) : outputFd_(outputFd) {}
   /// Leaves default attributes and a visible cursor behind (ncurses does not
   /// know what this writer set, so its endwin() would not undo it).
   ~TerminalWriter();
@@ -24,8 +22,7 @@ class TerminalWriter {
   TerminalWriter& operator=(const TerminalWriter&) = delete;
 
   /// Shows grid; cursor is (col, row) to show the cursor there, or nothing to hide it.
-  void Present(const ScreenGrid& grid, bool colour, int levelCount,
-               std::optional<std::pair<int, int>> cursor);
+  void Present(const ScreenGrid& grid, std::optional<std::pair<int, int>> cursor);
   /// False when writing the bottom-right cell would scroll the screen
   /// (automatic margins without deferred wrap): Present leaves it alone.
   static bool BottomRightWritable();
@@ -39,29 +36,28 @@ class TerminalWriter {
   /// terminal back for a while).
   void Release();
   size_t LastFrameBytes() const { return lastFrameBytes_; }
+  /// The bytes that give the terminal back as a shell expects it, whatever
+  /// state the viewer left: mouse reports off, default attributes, cursor
+  /// shown, keypad local, alternate screen left (needs the terminfo entry).
+  static std::string ResetSequence();
 
  private:
   /// Terminal attributes as SGR state: the least that changes them is sent.
   struct Attributes {
     bool reverse = false;
-    bool bold = false;
-    bool dim = false;
-    int foreground = -1;  ///< -1: the terminal's default
-    int background = -1;
+    TermColour foreground;
     bool operator==(const Attributes&) const = default;
   };
-  Attributes AttributesFor(const ScreenCell& cell, bool colour, int levelCount) const;
+  static Attributes AttributesFor(const ScreenCell& cell);
   void AppendAttributes(const Attributes& wanted);
   void AppendMove(int col, int row);
   void WriteAll();
 
-  ColourSupport colours_;
   int outputFd_;
   ScreenGrid previous_;
   bool valid_ = false;
   bool cursorShown_ = true;
   Attributes current_;
-  bool lastColour_ = false;
   std::string out_;
   size_t lastFrameBytes_ = 0;
 };

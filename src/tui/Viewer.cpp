@@ -14,10 +14,13 @@
 #include "io/LoadError.h"
 #include "raster/Renderer.h"
 #include "tui/LineEditor.h"
+#include "tui/LoadJob.h"
 #include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
 #include "tui/ScreenPainter.h"
+#include "tui/StatusFields.h"
 #include "tui/StatusLine.h"
+#include "tui/TerminalColours.h"
 #include "tui/TerminalSession.h"
 #include "tui/TerminalWriter.h"
 #include "tui/ViewerState.h"
@@ -30,6 +33,33 @@ using Clock = std::chrono::steady_clock;
 constexpr int kMinCols = 20;
 constexpr int kMinRows = 4;
 constexpr auto kTurntablePeriod = std::chrono::milliseconds(40);  // at most 25 frames a second
+constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is looked at
+
+// The up axis as the status line shows it.
+std::string UpAxisLabel(UpAxis axis) {
+  switch (axis) {
+    case UpAxis::kPlusX:
+      return "+x";
+    case UpAxis::kMinusX:
+      return "-x";
+    case UpAxis::kPlusY:
+      return "+y";
+    case UpAxis::kMinusY:
+      return "-y";
+    case UpAxis::kPlusZ:
+      return "+z";
+    case UpAxis::kMinusZ:
+      return "-z";
+  }
+  return "";
+}
+
+/// How the event loop ended.
+struct LoopOutcome {
+  int signalNumber = 0;          ///< the signal that ended it, or 0 (q)
+  bool abandonedLoad = false;    ///< a worker was still loading: leave with _Exit
+  std::string cancelledStart;    ///< the first model's load cancelled by Esc: its name
+};
 
 std::optional<NamedKey> NamedKeyFor(int key) {
   switch (key) {
@@ -64,49 +94,115 @@ std::string HomeDirectory() {
 class EventLoop {
  public:
   EventLoop(ViewerState& state, TerminalSession& session)
-      : state_(state), session_(session), writer_(session.Colours(), STDOUT_FILENO) {}
+      : state_(state), session_(session), writer_(STDOUT_FILENO) {}
 
-  void Run() {
+  LoopOutcome Run() {
+    LoopOutcome outcome;
     auto nextTurntableFrame = Clock::now();
-    while (!state_.QuitRequested()) {
+    while (!state_.QuitRequested() && !state_.StartError()) {
+      StartRequestedLoad();
       if (dirty_) Draw();
-      // Step 1: sleep until input, a signal, or the next turntable frame.
+      // Step 1: sleep until input, a signal, a finished load, or the next
+      // turntable frame (or a look at the load's progress).
       int timeoutMs = -1;
       if (state_.Turntable()) {
         const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(nextTurntableFrame -
                                                                                 Clock::now());
         timeoutMs = static_cast<int>(std::max<long long>(0, wait.count()));
       }
-      pollfd fds[2] = {{STDIN_FILENO, POLLIN, 0}, {session_.SignalFd(), POLLIN, 0}};
-      poll(fds, 2, timeoutMs);
-      if (!HandleSignals()) return;
-      if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) return;  // terminal gone
+      if (job_)
+        timeoutMs = timeoutMs < 0 ? kLoadProgressPollMs : std::min(timeoutMs, kLoadProgressPollMs);
+      pollfd fds[3] = {{STDIN_FILENO, POLLIN, 0},
+                       {session_.SignalFd(), POLLIN, 0},
+                       {job_ ? job_->ReadyFd() : -1, POLLIN, 0}};
+      poll(fds, 3, timeoutMs);
+      if (const int signalNumber = HandleSignals(); signalNumber != 0) {
+        outcome.signalNumber = signalNumber;
+        break;
+      }
+      if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
       // Step 2: every key that queued up while drawing, applied before one redraw.
       for (int key = session_.NextKey(); key != ERR; key = session_.NextKey()) HandleKey(key);
-      // Step 3: the turntable, at a capped rate.
+      // Step 3: a finished load, or news of one still running.
+      if (job_ && job_->Finished()) FinishLoad();
+      if (job_ && LoadingText() != shownLoadingText_) dirty_ = true;
+      // Step 4: the turntable, at a capped rate.
       if (state_.Turntable() && Clock::now() >= nextTurntableFrame) {
         state_.TurntableStep();
         dirty_ = true;
         nextTurntableFrame = std::max(nextTurntableFrame + kTurntablePeriod, Clock::now());
       }
     }
+    // A worker still reading a file is asked to stop and left to end alone.
+    outcome.abandonedLoad = abandonedLoad_ || (job_ && job_->Abandoned());
+    if (cancelledStart_) outcome.cancelledStart = cancelledName_;
+    job_.reset();
+    return outcome;
   }
 
  private:
-  // False when a signal ends the viewer.
-  bool HandleSignals() {
+  // Starts the load the state asked for, unless one is running already.
+  void StartRequestedLoad() {
+    if (job_) return;
+    std::optional<LoadRequest> request = state_.TakeLoadRequest();
+    if (!request) return;
+    jobRequest_ = std::move(*request);
+    job_ = std::make_unique<LoadJob>(jobRequest_.path);
+    shownLoadingText_.clear();
+    dirty_ = true;
+  }
+
+  void FinishLoad() {
+    Loaded<Scene> scene = job_->Take();
+    job_.reset();
+    state_.FinishLoad(jobRequest_, std::move(scene));
+    dirty_ = true;
+  }
+
+  void CancelLoad() {
+    const std::string name = LoadName();
+    cancelledName_ = name;
+    abandonedLoad_ = abandonedLoad_ || job_->Abandoned();
+    job_.reset();  // asks the loader to stop; its result, if any, is dropped
+    state_.SetMessage("cancelled loading " + name);
+    dirty_ = true;
+  }
+
+  std::string LoadName() const {
+    const std::string& path = jobRequest_.path;
+    return path.empty() ? "demo" : SanitizeForTerminal(path, 4096);
+  }
+
+  // "loading NAME 37%", as the status line shows it while a worker loads.
+  std::string LoadingText() const {
+    if (!job_) return "";
+    std::string text = job_->Preparing() ? "preparing " : "loading ";
+    text += LoadName();
+    const double progress = job_->Progress();
+    if (!job_->Preparing() && progress >= 0.0) {
+      char percent[16];
+      std::snprintf(percent, sizeof percent, " %d%%",
+                    static_cast<int>(std::min(1.0, progress) * 100.0));
+      text += percent;
+    }
+    text += " (Esc cancels)";
+    return text;
+  }
+
+  // The signal that ends the viewer, or 0.
+  int HandleSignals() {
     TerminalSession::Signals signals = session_.TakeSignals();
     if (signals.suspend) {
       writer_.Release();
       session_.Suspend();
-      signals.terminate = signals.terminate || session_.TakeSignals().terminate;
+      if (signals.terminate == 0) signals.terminate = session_.TakeSignals().terminate;
       signals.resumed = true;
     }
     if (signals.resumed) {  // the shell or another program drew over the screen
       writer_.Invalidate();
       dirty_ = true;
     }
-    return !signals.terminate;
+    return signals.terminate;
   }
 
   void HandleKey(int key) {
@@ -130,19 +226,30 @@ class EventLoop {
     ViewerAction action = ViewerAction::kNone;
     if (const auto named = NamedKeyFor(key)) {
       action = ActionForNamedKey(*named);
-      if (*named == NamedKey::kEscape && state_.LightMode())
+      if (*named == NamedKey::kEscape && state_.LightMode()) {
         action = ViewerAction::kToggleLightMode;
+      } else if (*named == NamedKey::kEscape && job_) {
+        CancelLoad();
+        if (!state_.HasModel()) {  // nothing to show: the viewer ends
+          cancelledStart_ = true;
+          state_.Apply(ViewerAction::kQuit);
+        }
+        return;
+      }
     } else if (key >= 0 && key < 128) {
       action = ActionForChar(key);
+    }
+    const bool loads = action == ViewerAction::kOpenFile || action == ViewerAction::kNextModel ||
+                       action == ViewerAction::kPreviousModel;
+    if (loads && job_) {  // one load at a time
+      state_.SetMessage("still loading " + LoadName() + " (Esc cancels)");
+      dirty_ = true;
+      return;
     }
     if (action == ViewerAction::kOpenFile) {
       prompting_ = true;
       editor_.Clear();
       completionMatches_ = 1;
-    }
-    if ((action == ViewerAction::kNextModel || action == ViewerAction::kPreviousModel) &&
-        state_.ModelCount() > 1) {
-      ShowBusy("loading...");
     }
     if (action != ViewerAction::kNone) {
       state_.SetMessage("");
@@ -162,8 +269,8 @@ class EventLoop {
       case KEY_ENTER:
         prompting_ = false;
         if (const std::string path = PromptPath(editor_.Text(), HomeDirectory()); !path.empty()) {
-          ShowBusy("loading " + SanitizeForTerminal(path, 4096));
-          state_.OpenPath(path);
+          state_.SetMessage("");
+          state_.RequestOpen(path);
         }
         break;
       case KEY_BACKSPACE:
@@ -229,15 +336,6 @@ class EventLoop {
     return TerminalWriter::BottomRightWritable() ? cols : cols - 1;
   }
 
-  // Puts what over the status line at once: loading a big model takes a while.
-  void ShowBusy(const std::string& what) {
-    const int cols = grid_.WidthCells(), rows = grid_.HeightCells();
-    if (cols < kMinCols || rows < kMinRows) return;
-    painter_.PaintStatus(ComposeStatusLine({{what, 0, false, Elision::kMiddle}}, StatusCols(cols)),
-                         grid_);
-    writer_.Present(grid_, state_.Colour(), state_.Render().ramp.LevelCount(), std::nullopt);
-  }
-
   void Draw() {
     dirty_ = false;
     const int cols = TerminalSession::WidthCells(), rows = TerminalSession::HeightCells();
@@ -245,7 +343,17 @@ class EventLoop {
     const int levelCount = state_.Render().ramp.LevelCount();
     if (cols < kMinCols || rows < kMinRows) {
       painter_.PaintTooSmall(grid_);
-      writer_.Present(grid_, false, levelCount, std::nullopt);
+      writer_.Present(grid_, std::nullopt);
+      return;
+    }
+    if (!state_.HasModel()) {  // the first model is loading: only the status line
+      grid_.Clear();
+      shownLoadingText_ = LoadingText();
+      painter_.PaintStatus(ComposeStatusLine({{shownLoadingText_, 0, false, Elision::kMiddle},
+                                              {"? help", 1, true}},
+                                             StatusCols(cols)),
+                           grid_);
+      writer_.Present(grid_, std::nullopt);
       return;
     }
     // Step 1: the frame, through the one shared pipeline.
@@ -256,7 +364,8 @@ class EventLoop {
     const RenderStats stats = renderer_.Render(
         state_.CurrentScene(), state_.CameraFor(cols, frameRows), state_.Render(), depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    painter_.PaintFrame(cells_, grid_);
+    CellColourMap colours(state_.CurrentScene().mesh.faceColors, levelCount, state_.Colour());
+    painter_.PaintFrame(cells_, colours, grid_);
     // Step 2: overlays and the status line, then one write of what changed.
     if (state_.HelpShown()) painter_.PaintHelp(grid_);
     std::optional<std::pair<int, int>> cursor;
@@ -270,39 +379,41 @@ class EventLoop {
     } else {
       painter_.PaintStatus(StatusText(stats, frameMs, StatusCols(cols)), grid_);
     }
-    writer_.Present(grid_, state_.Colour(), levelCount, cursor);
+    writer_.Present(grid_, cursor);
   }
 
-  // The status line, most important first: the message or model, the view,
-  // the help hint, the method, what was drawn, the frame time.
-  std::string StatusText(const RenderStats& stats, double frameMs, int cols) const {
-    constexpr int kLeadMinCells = 32;  // a long path keeps its tail: file name and [i/n]
+  // The status line: what is loading, a message or the model, then the
+  // view, the help hint and what the frame holds (StatusFields).
+  std::string StatusText(const RenderStats& stats, double frameMs, int cols) {
     const ViewParams& view = state_.View();
     const RenderOptions& render = state_.Render();
-    char viewText[96], drawnText[96], timeText[32];
+    const Scene& scene = state_.CurrentScene();
+    StatusFields fields;
+    char viewText[96];
     std::snprintf(viewText, sizeof viewText, "theta %.2f phi %.2f rho %.3g", view.theta, view.phi,
                   view.rho);
-    std::snprintf(drawnText, sizeof drawnText, "%d/%zu faces %d tris", stats.facesVisible,
-                  state_.CurrentScene().FaceCount(), stats.trianglesDrawn);
-    std::snprintf(timeText, sizeof timeText, "%.2f ms", frameMs);
-    // A message is shown whole if it can be; the model's path gives way to the view.
-    StatusSegment lead{SanitizeForTerminal(state_.Message(), 4096), 0, false, Elision::kMiddle};
-    if (lead.text.empty()) {
-      lead.text =
+    fields.view = viewText;
+    fields.method = std::string(MethodName(render.method)) + " " +
+                    std::string(ShadeModeName(render.shade)) +
+                    (render.cullBackFaces ? "" : " 2-sided");
+    fields.upAxis = UpAxisLabel(scene.mesh.upAxisFile);
+    fields.vertices = scene.verticesWorld.size();
+    fields.faces = scene.FaceCount();
+    fields.facesVisible = stats.facesVisible;
+    fields.trianglesDrawn = stats.trianglesDrawn;
+    fields.frameMs = frameMs;
+    // A load in progress first, then a message (shown whole if it can be),
+    // else the model's path, which gives way to the view.
+    shownLoadingText_ = LoadingText();
+    fields.lead = shownLoadingText_;
+    fields.leadIsModel = false;
+    if (fields.lead.empty()) fields.lead = SanitizeForTerminal(state_.Message(), 4096);
+    if (fields.lead.empty()) {
+      fields.lead =
           state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends" : state_.ModelLabel();
-      lead.elision = Elision::kFront;
-      lead.minWidthCells = kLeadMinCells;
+      fields.leadIsModel = !state_.LightMode();
     }
-    const std::string method = std::string(MethodName(render.method)) + " " +
-                               std::string(ShadeModeName(render.shade)) +
-                               (render.cullBackFaces ? "" : " 2-sided");
-    return ComposeStatusLine({lead,
-                              {method, 3, false},
-                              {drawnText, 4, false},
-                              {viewText, 1, true},
-                              {timeText, 5, true},
-                              {"? help", 2, true}},
-                             cols);
+    return ComposeViewerStatus(fields, cols);
   }
 
   ViewerState& state_;
@@ -314,7 +425,13 @@ class EventLoop {
   CellBuffer cells_;
   DepthBuffer depth_;
   LineEditor editor_;
-  int completionMatches_ = 1;  ///< names the last Tab matched (1: no hint)
+  std::unique_ptr<LoadJob> job_;  ///< the load running on a worker, if any
+  LoadRequest jobRequest_;
+  std::string shownLoadingText_;  ///< what the status line last said of it
+  int completionMatches_ = 1;     ///< names the last Tab matched (1: no hint)
+  bool cancelledStart_ = false;   ///< Esc while the first model loaded
+  std::string cancelledName_;     ///< what the last Esc cancelled
+  bool abandonedLoad_ = false;    ///< a cancelled worker may still be running
   bool prompting_ = false;
   bool dirty_ = true;
   bool dragging_ = false;
@@ -331,13 +448,8 @@ int RunViewer(const ViewerOptions& options) {
     return 2;
   }
   ViewerOptions effective = options;
-  const char* noColour = std::getenv("NO_COLOR");
-  if (noColour != nullptr && *noColour != '\0') effective.monochrome = true;
+  effective.colour = ResolveColourMode(options.colour);
   ViewerState state(effective, TerminalSession::ReportedCellAspect());
-  if (const auto error = state.LoadFirst()) {
-    std::cerr << error->ToString() << "\n";
-    return 1;
-  }
   std::setlocale(LC_ALL, "");
   const std::string codeset = nl_langinfo(CODESET);
   if (!options.render.ramp.IsAscii() && codeset != "UTF-8") {
@@ -346,16 +458,36 @@ int RunViewer(const ViewerOptions& options) {
               << SanitizeForTerminal(codeset) << "); try LANG=C.UTF-8\n";
     return 2;
   }
-  TerminalSession session;
-  if (!session.Ok()) {
-    std::cerr << "termshade: cannot start the terminal interface for TERM="
-              << SanitizeForTerminal(std::getenv("TERM") != nullptr ? std::getenv("TERM") : "")
-              << "\n";
-    return 2;
+  LoopOutcome outcome;
+  {
+    TerminalSession session;
+    if (!session.Ok()) {
+      std::cerr << "termshade: cannot start the terminal interface for TERM="
+                << SanitizeForTerminal(std::getenv("TERM") != nullptr ? std::getenv("TERM") : "")
+                << "\n";
+      return 2;
+    }
+    // The first model loads on the worker too: the screen says so at once.
+    state.RequestFirst();
+    EventLoop loop(state, session);
+    outcome = loop.Run();
+  }  // the terminal is given back here
+  // Killed: the signal's own exit status (128 + N), as a shell expects.
+  if (outcome.signalNumber != 0) return TerminalSession::ReRaise(outcome.signalNumber);
+  int code = 0;
+  if (const auto& error = state.StartError()) {  // no model could be shown
+    std::cerr << error->ToString() << "\n";
+    code = 1;
+  } else if (!outcome.cancelledStart.empty()) {
+    std::cerr << "termshade: cancelled loading " << outcome.cancelledStart << "\n";
+    code = 1;
   }
-  EventLoop loop(state, session);
-  loop.Run();
-  return 0;
+  if (outcome.abandonedLoad) {  // no static destructors under a running importer
+    std::cerr.flush();
+    std::fflush(nullptr);
+    std::_Exit(code);
+  }
+  return code;
 }
 
 }  // namespace termshade

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "raster/RenderOptions.h"
+#include "shade/ColourMode.h"
 
 namespace termshade {
 
@@ -12,7 +13,8 @@ namespace termshade {
 struct ViewerOptions {
   std::vector<std::string> modelPaths;  ///< empty: the embedded demo scene
   std::optional<double> cellAspect;     ///< unset: from the terminal, else 2.0
-  bool monochrome = false;
+  /// kAuto is resolved from the terminal before the viewer starts.
+  ColourMode colour = ColourMode::kAuto;
   RenderOptions render;
 };
 

@@ -23,6 +23,7 @@ constexpr std::array kKeys{
     ViewerKey{"a A", "cell aspect - / +", "aA"},
     ViewerKey{"o", "open a model file (Tab completes)", "o"},
     ViewerKey{"n p", "next / previous model", "np"},
+    ViewerKey{"Esc", "cancel a load", ""},
     ViewerKey{"?", "this help", "?"},
     ViewerKey{"q Ctrl-C", "quit (Ctrl-Z suspends)", "qQ"},
 };

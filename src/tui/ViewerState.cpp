@@ -21,53 +21,99 @@ std::string StatusLineError(LoadError error) {
 
 }  // namespace
 
-Loaded<Scene> LoadViewerScene(const std::string& path) {
-  Loaded<Mesh> mesh =
-      path.empty() ? ParseDat(DemoSceneText(), std::string(kDemoSceneName)) : LoadModelFile(path);
+Loaded<Mesh> LoadViewerMesh(const std::string& path, const LoadOptions& options) {
+  return path.empty() ? ParseDat(DemoSceneText(), std::string(kDemoSceneName))
+                      : LoadModelFile(path, options);
+}
+
+Loaded<Scene> LoadViewerScene(const std::string& path, const LoadOptions& options) {
+  Loaded<Mesh> mesh = LoadViewerMesh(path, options);
   if (!mesh.Ok()) return mesh.Error();
   return PrepareScene(std::move(mesh.Value()));
 }
 
 ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
-    : paths_(options.modelPaths), render_(options.render), colour_(!options.monochrome) {
+    : paths_(options.modelPaths),
+      render_(options.render),
+      colourMode_(options.colour == ColourMode::kNone || options.colour == ColourMode::kAuto
+                      ? ColourMode::k256
+                      : options.colour),
+      colourOn_(options.colour != ColourMode::kNone && options.colour != ColourMode::kAuto) {
   render_.keepDepth = false;  // the screen shows glyphs only
   if (paths_.empty()) paths_.emplace_back();
   cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
 }
 
+void ViewerState::RequestFirst() {
+  pending_ = LoadRequest{paths_.front(), 0};
+}
+
 std::optional<LoadError> ViewerState::LoadFirst() {
-  Loaded<Scene> scene = LoadViewerScene(paths_.front());
-  if (!scene.Ok()) return scene.Error();
+  RequestFirst();
+  while (pending_) RunPendingLoad();
+  return startError_;
+}
+
+void ViewerState::RequestOpen(const std::string& path) {
+  pending_ = LoadRequest{path, std::nullopt};
+}
+
+std::optional<LoadRequest> ViewerState::TakeLoadRequest() {
+  std::optional<LoadRequest> request = std::move(pending_);
+  pending_.reset();
+  return request;
+}
+
+void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
+  if (request.index && *request.index >= paths_.size()) return;
+  if (!scene.Ok() && !hasModel_ && request.index) {  // starting: on to the next model
+    if (!firstError_) firstError_ = scene.Error();
+    message_ = StatusLineError(scene.Error());
+    const size_t next = *request.index + 1;
+    if (next < paths_.size()) {
+      pending_ = LoadRequest{paths_[next], next};
+    } else {
+      startError_ = firstError_;
+    }
+    return;
+  }
+  if (!scene.Ok()) {
+    message_ = StatusLineError(scene.Error());
+    if (request.index) stepFrom_ = *request.index;  // the next n goes on from here
+    return;
+  }
+  if (request.index) {
+    current_ = *request.index;
+    if (hasModel_ || !firstError_) message_.clear();  // keep what was skipped on the way
+  } else {
+    paths_.insert(paths_.begin() + static_cast<std::ptrdiff_t>(current_ + 1), request.path);
+    current_ += 1;
+  }
+  stepFrom_ = current_;
   scene_ = std::move(scene.Value());
-  current_ = 0;
+  hasModel_ = true;
   ResetView();
-  return std::nullopt;
+  if (!request.index) message_ = "opened " + ModelLabel();
 }
 
 void ViewerState::OpenPath(const std::string& path) {
-  Loaded<Scene> scene = LoadViewerScene(path);
-  if (!scene.Ok()) {
-    message_ = StatusLineError(scene.Error());
-    return;
-  }
-  paths_.insert(paths_.begin() + static_cast<std::ptrdiff_t>(current_ + 1), path);
-  current_ += 1;
-  scene_ = std::move(scene.Value());
-  ResetView();
-  message_ = "opened " + ModelLabel();
+  RequestOpen(path);
+  RunPendingLoad();
 }
 
-void ViewerState::SwitchTo(size_t index) {
-  if (index == current_) return;
-  Loaded<Scene> scene = LoadViewerScene(paths_[index]);
-  if (!scene.Ok()) {
-    message_ = StatusLineError(scene.Error());
+void ViewerState::RunPendingLoad() {
+  if (const std::optional<LoadRequest> request = TakeLoadRequest()) {
+    FinishLoad(*request, LoadViewerScene(request->path));
+  }
+}
+
+void ViewerState::StepTo(size_t index) {
+  if (index == current_) {  // back where it started: nothing to load
+    stepFrom_ = current_;
+    message_.clear();
     return;
   }
-  current_ = index;
-  scene_ = std::move(scene.Value());
-  ResetView();
-  message_.clear();
+  pending_ = LoadRequest{paths_[index], index};
 }
 
 void ViewerState::ResetView() {
@@ -134,7 +180,7 @@ void ViewerState::Apply(ViewerAction action) {
           render_.shade == ShadeMode::kContrast ? ShadeMode::kLambert : ShadeMode::kContrast;
       break;
     case ViewerAction::kToggleColour:
-      colour_ = !colour_;
+      colourOn_ = !colourOn_;
       break;
     case ViewerAction::kToggleLightMode:
       lightMode_ = !lightMode_;
@@ -148,10 +194,10 @@ void ViewerState::Apply(ViewerAction action) {
     case ViewerAction::kOpenFile:
       break;  // the event loop owns the prompt
     case ViewerAction::kNextModel:
-      SwitchTo((current_ + 1) % paths_.size());
+      StepTo((stepFrom_ + 1) % paths_.size());
       break;
     case ViewerAction::kPreviousModel:
-      SwitchTo((current_ + paths_.size() - 1) % paths_.size());
+      StepTo((stepFrom_ + paths_.size() - 1) % paths_.size());
       break;
     case ViewerAction::kToggleHelp:
       help_ = !help_;

@@ -6,14 +6,25 @@
 #include "geometry/Camera.h"
 #include "geometry/Scene.h"
 #include "io/LoadError.h"
+#include "io/ModelLoader.h"
 #include "raster/RenderOptions.h"
+#include "shade/ColourMode.h"
 #include "tui/Viewer.h"
 #include "tui/ViewerAction.h"
 
 namespace termshade {
 
-/// Loads a model file, or the embedded demo scene for an empty path.
-Loaded<Scene> LoadViewerScene(const std::string& path);
+/// Reads a model file, or the embedded demo scene for an empty path.
+Loaded<Mesh> LoadViewerMesh(const std::string& path, const LoadOptions& options = {});
+/// LoadViewerMesh, then PrepareScene.
+Loaded<Scene> LoadViewerScene(const std::string& path, const LoadOptions& options = {});
+
+/// A model the viewer wants loaded (the event loop loads it on a worker).
+struct LoadRequest {
+  std::string path;
+  /// Which model of the list (n, p); none: a new path to add after the current one (o).
+  std::optional<size_t> index;
+};
 
 /// Everything the viewer shows, changed only through actions: no terminal
 /// code here, so it is tested directly.
@@ -22,10 +33,28 @@ class ViewerState {
   /// terminalAspect: the cell aspect the terminal reports (0 if it does not).
   ViewerState(const ViewerOptions& options, double terminalAspect);
 
-  /// Opens the first model; the error (if any) means the viewer cannot start.
+  /// Asks for the first model of the list; until one has loaded, a failed
+  /// load asks for the next one (a message names the ones skipped).
+  void RequestFirst();
+  /// RequestFirst, loaded here and now; the error (if none loads) means the
+  /// viewer cannot start.
   std::optional<LoadError> LoadFirst();
-  /// Opens a model by path and adds it to the list; on failure keeps the current one.
+  /// True once a model is shown.
+  bool HasModel() const { return hasModel_; }
+  /// Every model of the list failed before one was shown: the first error.
+  const std::optional<LoadError>& StartError() const { return startError_; }
+  /// Asks for a model by path, to be added to the list after the current one.
+  void RequestOpen(const std::string& path);
+  /// The load asked for by RequestOpen or n/p, if any; taking it clears it.
+  std::optional<LoadRequest> TakeLoadRequest();
+  /// Applies a finished load: the model is shown, or the current one kept
+  /// with the error as the message. A failed n/p still counts as a step, so
+  /// the next n moves on past the failed model.
+  void FinishLoad(const LoadRequest& request, Loaded<Scene> scene);
+  /// RequestOpen, loaded here and now (tests, and no event loop).
   void OpenPath(const std::string& path);
+  /// Loads a pending request here and now.
+  void RunPendingLoad();
 
   void Apply(ViewerAction action);
   /// Mouse drag by whole cells: orbit like the arrow keys, one step per cell across
@@ -41,7 +70,8 @@ class ViewerState {
   double CellAspect() const { return cellAspect_; }
   std::string ModelLabel() const;
   size_t ModelCount() const { return paths_.size(); }
-  bool Colour() const { return colour_; }
+  /// The colour mode cells are drawn in now (kNone after `c` turned it off).
+  ColourMode Colour() const { return colourOn_ ? colourMode_ : ColourMode::kNone; }
   bool LightMode() const { return lightMode_; }
   bool Turntable() const { return turntable_; }
   bool HelpShown() const { return help_; }
@@ -54,19 +84,25 @@ class ViewerState {
   static constexpr double kAspectStep = 0.05;
 
  private:
-  void SwitchTo(size_t index);
+  void StepTo(size_t index);
   void ResetView();
   void Orbit(double dTheta, double dPhi);
   void ChangeDistance(double factor);
 
   std::vector<std::string> paths_;  ///< "" is the demo scene
   size_t current_ = 0;
+  size_t stepFrom_ = 0;  ///< where n and p count from: the last model tried
+  std::optional<LoadRequest> pending_;
+  bool hasModel_ = false;
+  std::optional<LoadError> firstError_;  ///< of the models tried before one loaded
+  std::optional<LoadError> startError_;
   Scene scene_;
   ViewParams view_;
   double fitRho_ = 1.0;
   double cellAspect_ = 2.0;
   RenderOptions render_;
-  bool colour_ = true;
+  ColourMode colourMode_ = ColourMode::k256;  ///< what `c` turns on
+  bool colourOn_ = true;
   bool lightMode_ = false;
   bool turntable_ = false;
   bool help_ = false;

@@ -41,7 +41,7 @@ expect help_lists_render grep -q "render" "$work/out"
 check version 0 "" -- "$bin" --version
 expect version_names_the_program grep -qE '^termshade [0-9]+\.[0-9]+\.[0-9]+$' "$work/out"
 check render_help 0 "" -- "$bin" render --help
-for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --format --frames --step --output --no-cull; do
+for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --format --frames --step --output --no-cull --color --mono; do
   expect "render_help_documents_$option" grep -q -- "$option" "$work/out"
 done
 check turntable 0 "" -- "$bin" render "$src/data/cube.dat" --frames 3 --step 0.5 --size 20x10
@@ -55,6 +55,21 @@ expect ansi_has_sgr grep -q $'\x1b\\[38;5;' "$work/out"
 "$bin" render "$src/data/sphere_cone.dat" --size 50x16 --format ansi | sed 's/\x1b\[[0-9;]*m//g' >"$work/stripped"
 "$bin" render "$src/data/sphere_cone.dat" --size 50x16 >"$work/plain"
 expect ansi_is_text_plus_colour cmp -s "$work/stripped" "$work/plain"
+# --color: 24-bit or none for ansi; never a background; auto follows the environment.
+check ansi_truecolor 0 "" -- "$bin" render "$src/data/cube.dat" --format ansi --size 30x10 --color truecolor
+expect ansi_truecolor_has_24bit grep -q $'\x1b\\[38;2;' "$work/out"
+expect ansi_no_background bash -c "! grep -q '48;' '$work/out'"
+check ansi_color_none 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --color none
+expect ansi_color_none_is_text cmp -s "$work/out" "$work/plain"
+check ansi_mono 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --mono
+expect ansi_mono_is_text cmp -s "$work/out" "$work/plain"
+check ansi_auto_no_color 0 "" -- env NO_COLOR=1 COLORTERM=truecolor "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --color auto
+expect ansi_auto_no_color_is_text cmp -s "$work/out" "$work/plain"
+check ansi_auto_truecolor 0 "" -- env -u NO_COLOR COLORTERM=truecolor "$bin" render "$src/data/cube.dat" --format ansi --size 30x10 --color auto
+expect ansi_auto_truecolor_24bit grep -q $'\x1b\\[38;2;' "$work/out"
+check ansi_auto_256 0 "" -- env -u NO_COLOR -u COLORTERM TERM=xterm-256color "$bin" render "$src/data/cube.dat" --format ansi --size 30x10 --color auto
+expect ansi_auto_256_indexed grep -q $'\x1b\\[38;5;' "$work/out"
+check bad_color 2 "--color" -- "$bin" render "$src/data/cube.dat" --color 16
 check auto_method 0 "" -- "$bin" render "$src/data/cube.dat" --method auto --format json --size 20x8
 expect auto_reports_itself grep -q '"method": "auto"' "$work/out"
 check generate 0 "" -- "$bin" generate wedge

@@ -194,10 +194,45 @@ with open(sys.argv[1], "w") as out:
             out.write("%d %d %d %d.\n" % (i * n + j + 1, (i + 1) * n + j + 1, (i + 1) * n + k + 1,
                                            i * n + k + 1))
 PY
+# The load runs on a worker: the viewer answers keys meanwhile, and Esc
+# cancels it, keeping the model shown.
 at_prompt "$work/big.dat"
-wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message for a big model"
+wait_for 'loading .*big\.dat.*Esc cancels' 5 >/dev/null && pass || fail "no loading message for a big model"
+tm send-keys -t v Right
+tm send-keys -t v Escape
+wait_for 'cancelled loading .*big\.dat' 5 >/dev/null && pass || fail "Esc did not cancel the load"
+# The model shown before (the wedge), turned by the key pressed while loading.
+frame_matches_render key_while_loading_and_model_kept 24 "$src/data/wedge.dat" --size 80x24 --theta 0.4
+tm send-keys -t v r
+at_prompt "$work/big.dat"
+wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message the second time"
 wait_for 'opened .*big\.dat' 30 >/dev/null && pass || fail "the big model did not open"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null || fail "q after the big model"
+# The first model loads with the screen already taken: Esc cancels it (exit
+# 1, saying so) and Ctrl-C quits at once with its own status.
+run "clear; $bin $work/big.dat; echo status=\$?"
+wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message for the first model"
+tm send-keys -t v Escape
+wait_for 'cancelled loading .*big\.dat' 5 >/dev/null && pass || fail "Esc did not cancel the first load"
+wait_for '^status=1' 5 >/dev/null && pass || fail "cancelled first load: exit status not 1"
+run "clear; bash -c 'trap \"\" INT; $bin $work/big.dat; echo status=\$?'"
+wait_for 'loading .*big\.dat' 5 >/dev/null || fail "no loading message for the first model (Ctrl-C)"
+tm send-keys -t v C-c
+wait_for '^status=130' 3 >/dev/null && pass || fail "Ctrl-C during the first load: status not 130 at once"
 rm -f "$work/big.dat"
+run "clear; $bin"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start again after the big model"
+
+# 7c. A FIFO typed at 'o' is refused at once (regular files only), and the
+# viewer goes on.
+mkfifo "$work/pipe.obj"
+at_prompt "$work/pipe.obj"
+wait_for 'pipe\.obj: .*(regular|FIFO|fifo)' 3 >/dev/null && pass || fail "o on a FIFO did not fail at once (the loader must refuse what is not a regular file: issue 7 item 3)"
+tm send-keys -t v Escape
+tm send-keys -t v Right
+wait_for 'theta 0\.40' 5 >/dev/null && pass || fail "keys dead after o on a FIFO"
+tm send-keys -t v r
 
 # 8. q exits and leaves the shell usable (echo on, canonical input).
 tm send-keys -t v q
@@ -206,19 +241,36 @@ run "stty -a | tr ' ' '\n' | grep -xE 'echo|icanon' | tr '\n' ' '; echo; echo do
 wait_for '^(icanon echo|echo icanon)' 5 >/dev/null && pass || fail "terminal not sane after q"
 wait_for 'done-42' 5 >/dev/null && pass || fail "shell not usable after q"
 
-# 9. SIGTERM, SIGHUP and Ctrl-C restore the terminal too.
-for how in TERM HUP INT; do
+# 9. Signals: the terminal is given back (alternate screen left, cursor
+# shown, mouse reports off, echo and canonical input on) and the exit status
+# is the signal's, 128 + N. SIGTERM, SIGHUP and Ctrl-C end the event loop;
+# SIGSEGV, SIGABRT, SIGUSR1 and SIGALRM restore the terminal in the handler.
+terminal_given_back() {  # NAME
+  local flags
+  flags=$(tm display-message -p -t v '#{alternate_on} #{cursor_flag} #{mouse_any_flag}')
+  if [ "$flags" = "0 1 0" ]; then pass; else
+    fail "$1: alternate screen, cursor, mouse = '$flags' (want '0 1 0')"
+  fi
+  run "clear; stty -a | tr ' ' '\n' | grep -xE 'echo|icanon' | tr '\n' ' '; echo"
+  wait_for '^(icanon echo|echo icanon)' 5 >/dev/null && pass || fail "terminal not sane after $1"
+}
+for how in TERM HUP INT SEGV ABRT USR1 ALRM; do
+  number=$(kill -l "$how")
   tm send-keys -t v C-l
-  run "clear; $bin & pid=\$!; fg"
+  # The wrapper shell ignores SIGINT, so Ctrl-C reaches the viewer alone
+  # and the wrapper lives to print the status.
+  run "clear; bash -c 'trap \"\" INT; $bin; echo status=\$?'"
   wait_for '\? help' 5 >/dev/null || fail "viewer did not start for SIG$how"
+  if [ "$(tm display-message -p -t v '#{alternate_on} #{mouse_any_flag}')" != "1 1" ]; then
+    fail "SIG$how: the viewer did not take the screen and mouse"
+  fi
   if [ "$how" = INT ]; then
     tm send-keys -t v C-c
   else
     pkill -"$how" -f "^$bin\$" || fail "no viewer process for SIG$how"
   fi
-  wait_for '^\$ ?$' 5 >/dev/null || fail "SIG$how did not end the viewer"
-  run "clear; stty -a | tr ' ' '\n' | grep -xE 'echo|icanon' | tr '\n' ' '; echo"
-  wait_for '^(icanon echo|echo icanon)' 5 >/dev/null && pass || fail "terminal not sane after SIG$how"
+  wait_for "^status=$((128 + number))" 5 >/dev/null && pass || fail "SIG$how: exit status not $((128 + number))"
+  terminal_given_back "SIG$how"
 done
 
 # 9b. Ctrl-Z gives the shell a sane terminal; fg brings the whole screen back
@@ -252,26 +304,48 @@ tm send-keys -t v '?'
 wait_for 'termshade keys' 5 >/dev/null && pass || fail "help overlay"
 tm send-keys -t v x q
 wait_for '^\$ ?$' 5 >/dev/null || fail "q after help"
-# 11. Colour where the terminal has it (256 colours here), none with NO_COLOR or --mono,
-# and nothing of it left on the shell's line afterwards.
+# 11. Colour where the terminal has it (256 colours here, 24-bit with
+# COLORTERM=truecolor), none with NO_COLOR, --mono or --color none; never a
+# background of our own; nothing of it left on the shell's line afterwards.
+colour_codes() { grep -oE '38;(5;[0-9]+|2;[0-9]+;[0-9]+)' | sort -u; }
 run "clear; $bin"
 wait_for '\? help' 5 >/dev/null
-if tm capture-pane -t v -p -e | grep -q '48;5;153'; then pass; else fail "no light blue background"; fi
+settle
+tm capture-pane -t v -p -e >"$work/colours.txt"
+if grep -q '48;' "$work/colours.txt"; then fail "a background colour was painted"; else pass; fi
+if grep -q '38;5;' "$work/colours.txt"; then pass; else fail "no 256-colour faces"; fi
+# The ansi dump carries the same colours as the screen.
+head -n 24 "$work/colours.txt" | colour_codes >"$work/screen_colours.txt"
+"$bin" render "$src/data/sphere_cone.dat" --size 80x24 --format ansi --color 256 | colour_codes >"$work/dump_colours.txt"
+if [ -s "$work/dump_colours.txt" ] && cmp -s "$work/screen_colours.txt" "$work/dump_colours.txt"; then pass; else
+  fail "screen and ansi dump colours differ"
+  diff "$work/screen_colours.txt" "$work/dump_colours.txt" | head -5
+fi
 tm send-keys -t v c
 settle
-if tm capture-pane -t v -p -e | grep -q '48;5;153'; then fail "c did not turn colour off"; else pass; fi
+if tm capture-pane -t v -p -e | grep -q '38;'; then fail "c did not turn colour off"; else pass; fi
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 run "echo after-viewer"
 wait_for '^after-viewer' 5 >/dev/null
-if tm capture-pane -t v -p -e | grep 'after-viewer' | grep -q '48;5'; then fail "colour left on the shell"; else pass; fi
-for mono in "NO_COLOR=1 $bin" "$bin --mono"; do
-  run "clear; $mono"
+if tm capture-pane -t v -p -e | grep 'after-viewer' | grep -q '[34]8;'; then fail "colour left on the shell"; else pass; fi
+# colour_case yes|no PATTERN COMMAND: starts the viewer by COMMAND and checks
+# whether the screen's SGR sequences match PATTERN.
+colour_case() {
+  local got=no
+  run "clear; $3"
   wait_for '\? help' 5 >/dev/null
-  if tm capture-pane -t v -p -e | grep -q '38;5;'; then fail "colour despite: $mono"; else pass; fi
+  settle
+  if tm capture-pane -t v -p -e | grep -qE "$2"; then got=yes; fi
+  if [ "$got" = "$1" ]; then pass; else fail "colour '$2' expected $1 with: $3"; fi
   tm send-keys -t v q
   wait_for '^\$ ?$' 5 >/dev/null
+}
+colour_case yes '38;2;' "COLORTERM=truecolor $bin"
+for mono in "NO_COLOR=1 $bin" "$bin --mono" "$bin --color none" "COLORTERM=truecolor $bin --mono"; do
+  colour_case no '38;' "$mono"
 done
+colour_case yes '38;5;' "NO_COLOR=1 $bin --color 256"
 
 # 12. Several models on the command line: n and p step through them.
 run "clear; $bin $src/data/cube.dat $src/data/beams.dat"
@@ -282,6 +356,16 @@ wait_for 'beams.dat \[2/2\]' 5 >/dev/null && pass || fail "n did not step to the
 frame_matches_render second_of_two_models 24 "$src/data/beams.dat" --size 80x24
 tm send-keys -t v n
 wait_for 'cube.dat \[1/2\]' 5 >/dev/null && pass || fail "n did not wrap around"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+# n after a model that fails moves on to the next one.
+run "clear; $bin $src/data/cube.dat $src/tests/models/bad/undefined_vertex.dat $src/data/beams.dat"
+wait_for 'cube.dat \[1/3\]' 5 >/dev/null || fail "first of three models"
+tm send-keys -t v n
+wait_for 'undefined_vertex.dat:14:7' 5 >/dev/null && pass || fail "n to a bad model: no error"
+tm send-keys -t v n
+wait_for 'beams.dat \[3/3\]' 5 >/dev/null && pass || fail "n after a failed model did not move on"
+frame_matches_render next_after_failed_model 24 "$src/data/beams.dat" --size 80x24
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 

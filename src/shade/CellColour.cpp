@@ -1,0 +1,158 @@
+#include "shade/CellColour.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace termshade {
+namespace {
+
+struct Linear {
+  double r, g, b;
+};
+
+double LuminanceOf(const Linear& c) {
+  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
+
+// sRGB transfer function (IEC 61966-2-1).
+double EncodeSrgb(double linear) {
+  const double c = std::clamp(linear, 0.0, 1.0);
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+double DecodeSrgb(uint8_t value) {
+  const double c = value / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+uint8_t ToByte(double encoded) {
+  return static_cast<uint8_t>(std::lround(std::clamp(encoded, 0.0, 1.0) * 255.0));
+}
+
+// Squared distance of two sRGB colours, weighted by how the eye tells them
+// apart ("redmean", Riemersma's low-cost approximation).
+double Distance(Srgb8 a, Srgb8 b) {
+  const double meanRed = (a.r + b.r) / 2.0;
+  const double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+  return (2.0 + meanRed / 256.0) * dr * dr + 4.0 * dg * dg +
+         (2.0 + (255.0 - meanRed) / 256.0) * db * db;
+}
+
+// Palette entries 16..255 within the luminance bounds, with their colours.
+struct PaletteEntry {
+  int index;
+  Srgb8 colour;
+};
+const std::vector<PaletteEntry>& VisiblePalette() {
+  static const std::vector<PaletteEntry> entries = [] {
+    std::vector<PaletteEntry> out;
+    for (int index = 16; index < 256; ++index) {
+      const Srgb8 colour = Palette256Colour(index);
+      const double luminance = RelativeLuminance(colour);
+      if (luminance >= kMinCellLuminance && luminance <= kMaxCellLuminance) {
+        out.push_back({index, colour});
+      }
+    }
+    return out;
+  }();
+  return entries;
+}
+
+}  // namespace
+
+double IntensityForLevel(int level, int levelCount) {
+  if (levelCount <= 1) return 1.0;
+  return std::clamp(static_cast<double>(level) / (levelCount - 1), 0.0, 1.0);
+}
+
+Srgb8 ShadedFaceColour(Rgb faceLinear, double intensity) {
+  // Step 1: the face colour, no brighter than the brightest bound.
+  Linear c{std::clamp<double>(faceLinear.r, 0.0, 1.0), std::clamp<double>(faceLinear.g, 0.0, 1.0),
+           std::clamp<double>(faceLinear.b, 0.0, 1.0)};
+  const double faceLuminance = LuminanceOf(c);
+  if (faceLuminance > kMaxCellLuminance) {
+    const double scale = kMaxCellLuminance / faceLuminance;
+    c = {c.r * scale, c.g * scale, c.b * scale};
+  }
+  // Step 2: x intensity, from kDarkestShare at 0 to the whole colour at 1.
+  const double share = kDarkestShare + (1.0 - kDarkestShare) * std::clamp(intensity, 0.0, 1.0);
+  c = {c.r * share, c.g * share, c.b * share};
+  // Step 3: a shade below the darkest bound is lifted with grey (the
+  // luminance weights sum to 1, so adding g to each component adds g).
+  const double luminance = LuminanceOf(c);
+  if (luminance < kMinCellLuminance) {
+    const double lift = kMinCellLuminance - luminance;
+    c = {c.r + lift, c.g + lift, c.b + lift};
+  }
+  return {ToByte(EncodeSrgb(c.r)), ToByte(EncodeSrgb(c.g)), ToByte(EncodeSrgb(c.b))};
+}
+
+Srgb8 Palette256Colour(int index) {
+  if (index >= 232) {
+    const auto grey = static_cast<uint8_t>(8 + 10 * (std::clamp(index, 232, 255) - 232));
+    return {grey, grey, grey};
+  }
+  static constexpr std::array<uint8_t, 6> kLevels{0, 95, 135, 175, 215, 255};
+  const int cube = std::clamp(index, 16, 231) - 16;
+  return {kLevels[static_cast<size_t>(cube / 36)], kLevels[static_cast<size_t>(cube / 6 % 6)],
+          kLevels[static_cast<size_t>(cube % 6)]};
+}
+
+int Nearest256Colour(Srgb8 colour) {
+  int best = VisiblePalette().front().index;
+  double bestDistance = Distance(colour, VisiblePalette().front().colour);
+  for (const PaletteEntry& entry : VisiblePalette()) {
+    const double distance = Distance(colour, entry.colour);
+    if (distance < bestDistance) {  // ties keep the lower index
+      best = entry.index;
+      bestDistance = distance;
+    }
+  }
+  return best;
+}
+
+TermColour CellColour(Rgb faceLinear, double intensity, ColourMode mode) {
+  TermColour out;
+  if (mode == ColourMode::kNone || mode == ColourMode::kAuto) return out;
+  const Srgb8 shaded = ShadedFaceColour(faceLinear, intensity);
+  if (mode == ColourMode::kTrueColour) {
+    out.kind = TermColour::Kind::kRgb;
+    out.rgb = shaded;
+  } else {
+    out.kind = TermColour::Kind::kIndexed;
+    out.index = static_cast<uint8_t>(Nearest256Colour(shaded));
+  }
+  return out;
+}
+
+double RelativeLuminance(Srgb8 colour) {
+  return LuminanceOf({DecodeSrgb(colour.r), DecodeSrgb(colour.g), DecodeSrgb(colour.b)});
+}
+
+double ContrastRatio(Srgb8 a, Srgb8 b) {
+  const double la = RelativeLuminance(a), lb = RelativeLuminance(b);
+  return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+TermColour CellColourMap::ForFace(uint32_t faceNumber, int level) {
+  const bool known = faceNumber >= 1 && faceNumber <= faceColours_.size();
+  const Rgb face = known ? faceColours_[faceNumber - 1] : kDefaultFaceColour;
+  Key key{};
+  std::memcpy(&key.r, &face.r, sizeof(float));
+  std::memcpy(&key.g, &face.g, sizeof(float));
+  std::memcpy(&key.b, &face.b, sizeof(float));
+  key.level = level;
+  const auto [at, inserted] = cache_.try_emplace(key);
+  if (inserted) at->second = CellColour(face, IntensityForLevel(level, levelCount_), mode_);
+  return at->second;
+}
+
+size_t CellColourMap::KeyHash::operator()(const Key& key) const {
+  uint64_t h = static_cast<uint32_t>(key.level);
+  for (uint32_t part : {key.r, key.g, key.b}) h = (h ^ part) * 0x100000001B3ULL;
+  return static_cast<size_t>(h);
+}
+
+}  // namespace termshade

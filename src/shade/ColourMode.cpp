@@ -1,0 +1,36 @@
+#include "shade/ColourMode.h"
+
+namespace termshade {
+
+std::optional<ColourMode> ParseColourMode(std::string_view name) {
+  if (name == "none") return ColourMode::kNone;
+  if (name == "256") return ColourMode::k256;
+  if (name == "truecolor" || name == "24bit") return ColourMode::kTrueColour;
+  if (name == "auto") return ColourMode::kAuto;
+  return std::nullopt;
+}
+
+std::string_view ColourModeName(ColourMode mode) {
+  switch (mode) {
+    case ColourMode::kNone:
+      return "none";
+    case ColourMode::k256:
+      return "256";
+    case ColourMode::kTrueColour:
+      return "truecolor";
+    case ColourMode::kAuto:
+      return "auto";
+  }
+  return "none";
+}
+
+ColourMode AutoColourMode(std::string_view noColor, std::string_view colorTerm, int terminfoColours,
+                          bool terminfoDirect) {
+  if (!noColor.empty()) return ColourMode::kNone;  // https://no-color.org
+  if (colorTerm == "truecolor" || colorTerm == "24bit" || terminfoDirect) {
+    return ColourMode::kTrueColour;
+  }
+  return terminfoColours >= 256 ? ColourMode::k256 : ColourMode::kNone;
+}
+
+}  // namespace termshade

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "geometry/Scene.h"
+#include "io/LoadError.h"
+
+namespace termshade {
+
+/// One model load on a worker thread: the file read and PrepareScene, with
+/// the loader's cancel flag and progress hooks. The worker never touches the
+/// terminal: it writes one byte to a pipe when done, which the event loop
+/// polls with its other descriptors.
+class LoadJob {
+ public:
+  explicit LoadJob(std::string path);
+  /// Joins a finished worker; asks an unfinished one to stop and lets it end
+  /// on its own (see Abandoned).
+  ~LoadJob();
+  LoadJob(const LoadJob&) = delete;
+  LoadJob& operator=(const LoadJob&) = delete;
+
+  const std::string& Path() const { return path_; }
+  /// Readable once the worker has finished.
+  int ReadyFd() const { return shared_->readyPipe[0]; }
+  bool Finished() const { return shared_->finished.load(); }
+  /// Share of the file read, in [0, 1], or negative while the importer has
+  /// not said; 1 while the scene is being prepared.
+  double Progress() const { return shared_->progress.load(); }
+  bool Preparing() const { return shared_->preparing.load(); }
+  /// Asks the loader to stop (it polls the flag); returns at once.
+  void Cancel() { shared_->cancel.store(true); }
+  /// The result, once Finished(); joins the worker.
+  Loaded<Scene> Take();
+  /// True when the worker is still running: the process should not run
+  /// static destructors under it (leave with _Exit).
+  bool Abandoned() const { return !Finished(); }
+
+ private:
+  struct Shared {
+    Shared();
+    ~Shared();
+    Shared(const Shared&) = delete;
+    Shared& operator=(const Shared&) = delete;
+    std::atomic<bool> cancel{false};
+    std::atomic<bool> finished{false};
+    std::atomic<bool> preparing{false};
+    std::atomic<double> progress{-1.0};
+    std::optional<Loaded<Scene>> result;  ///< written by the worker before finished
+    int readyPipe[2] = {-1, -1};
+  };
+  static void Work(const std::shared_ptr<Shared>& shared, const std::string& path);
+
+  std::string path_;
+  std::shared_ptr<Shared> shared_;
+  std::thread worker_;
+};
+
+}  // namespace termshade

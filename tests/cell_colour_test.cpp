@@ -1,0 +1,166 @@
+// Cell colours (SPEC 10): face colour x intensity, the nearest visible entry
+// of the 256-colour cube or grey ramp, visible on dark and light themes, and
+// the same colours in the ansi dump as on the screen.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <set>
+
+#include "io/FrameFormats.h"
+#include "shade/CellColour.h"
+#include "shade/ColourMode.h"
+#include "support/TestSupport.h"
+
+namespace termshade {
+namespace {
+
+constexpr Srgb8 kBlack{0, 0, 0};
+constexpr Srgb8 kWhite{255, 255, 255};
+// The floor every shade keeps against a black (dark theme) and a white
+// (light theme) background, as a WCAG 2 contrast ratio.
+constexpr double kContrastFloor = 2.5;
+
+const std::vector<Rgb>& TestColours() {
+  static const std::vector<Rgb> colours{
+      kDefaultFaceColour, {1, 1, 1},        {0, 0, 0},
+      {1, 1, 0},          {0, 0, 1},        {1, 0, 0},
+      {0, 1, 0},          {0.5F, 0.25F, 0}, {0.02F, 0.02F, 0.05F}};
+  return colours;
+}
+
+TEST(CellColour, ContrastRatioIsWcags) {
+  EXPECT_NEAR(ContrastRatio(kBlack, kWhite), 21.0, 1e-9);
+  EXPECT_NEAR(ContrastRatio(kWhite, kWhite), 1.0, 1e-9);
+  EXPECT_NEAR(RelativeLuminance({128, 128, 128}), 0.2158, 1e-4);
+}
+
+TEST(CellColour, DarkestAndBrightestShadesStayVisibleOnDarkAndLightThemes) {
+  for (const Rgb& face : TestColours()) {
+    for (const ColourMode mode : {ColourMode::kTrueColour, ColourMode::k256}) {
+      for (const double intensity : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+        const TermColour colour = CellColour(face, intensity, mode);
+        const Srgb8 shown =
+            mode == ColourMode::kTrueColour ? colour.rgb : Palette256Colour(colour.index);
+        EXPECT_GE(ContrastRatio(shown, kBlack), kContrastFloor)
+            << face.r << " " << face.g << " " << face.b << " at " << intensity;
+        EXPECT_GE(ContrastRatio(shown, kWhite), kContrastFloor)
+            << face.r << " " << face.g << " " << face.b << " at " << intensity;
+      }
+    }
+  }
+}
+
+TEST(CellColour, TruecolourIsFaceColourTimesIntensity) {
+  // A mid-grey face within the bounds: exactly face x (0.2 + 0.8 intensity), sRGB-encoded.
+  const Rgb face{0.3F, 0.3F, 0.3F};
+  const Srgb8 full = ShadedFaceColour(face, 1.0);
+  EXPECT_EQ(full, (Srgb8{149, 149, 149}));  // sRGB of linear 0.3
+  const Srgb8 half = ShadedFaceColour(face, 0.5);
+  EXPECT_EQ(half, (Srgb8{118, 118, 118}));  // sRGB of linear 0.3 x 0.6 = 0.18
+  // Hue is kept: a red face stays red, a yellow one yellow.
+  const Srgb8 red = ShadedFaceColour({1, 0, 0}, 1.0);
+  EXPECT_GT(red.r, 200);
+  EXPECT_EQ(red.g, red.b);
+  const Srgb8 yellow = ShadedFaceColour({1, 1, 0}, 0.6);
+  EXPECT_EQ(yellow.r, yellow.g);
+  EXPECT_LT(yellow.b, yellow.r / 2);
+}
+
+TEST(CellColour, BrighterIntensityIsNeverDarker) {
+  for (const Rgb& face : TestColours()) {
+    double previous = 0.0;
+    for (int step = 0; step <= 20; ++step) {
+      const double luminance = RelativeLuminance(ShadedFaceColour(face, step / 20.0));
+      EXPECT_GE(luminance + 2.5e-3, previous);  // one 8-bit sRGB step at the dark end
+      previous = luminance;
+    }
+  }
+}
+
+TEST(CellColour, Nearest256IsACubeOrGreyEntry) {
+  EXPECT_EQ(Palette256Colour(16), (Srgb8{0, 0, 0}));
+  EXPECT_EQ(Palette256Colour(196), (Srgb8{255, 0, 0}));
+  EXPECT_EQ(Palette256Colour(232), (Srgb8{8, 8, 8}));
+  EXPECT_EQ(Palette256Colour(244), (Srgb8{128, 128, 128}));
+  // Exact palette colours within the bounds map to themselves.
+  EXPECT_EQ(Nearest256Colour({128, 128, 128}), 244);
+  EXPECT_EQ(Nearest256Colour({175, 95, 0}), 130);  // 16 + 36*3 + 6*1 + 0
+  for (int r = 0; r < 256; r += 15) {
+    for (int g = 0; g < 256; g += 15) {
+      const int index = Nearest256Colour(
+          {static_cast<uint8_t>(r), static_cast<uint8_t>(g), static_cast<uint8_t>(255 - r)});
+      EXPECT_GE(index, 16);
+      EXPECT_LE(index, 255);
+    }
+  }
+}
+
+TEST(CellColour, NoneIsTheTerminalsDefault) {
+  EXPECT_EQ(CellColour({1, 0, 0}, 0.5, ColourMode::kNone), TermColour{});
+  EXPECT_EQ(IntensityForLevel(0, 9), 0.0);
+  EXPECT_EQ(IntensityForLevel(8, 9), 1.0);
+  EXPECT_EQ(IntensityForLevel(0, 1), 1.0);
+}
+
+TEST(ColourMode, ParsesAndResolvesAuto) {
+  EXPECT_EQ(ParseColourMode("none"), ColourMode::kNone);
+  EXPECT_EQ(ParseColourMode("256"), ColourMode::k256);
+  EXPECT_EQ(ParseColourMode("truecolor"), ColourMode::kTrueColour);
+  EXPECT_EQ(ParseColourMode("auto"), ColourMode::kAuto);
+  EXPECT_FALSE(ParseColourMode("16").has_value());
+  EXPECT_EQ(AutoColourMode("1", "truecolor", 256, true), ColourMode::kNone);
+  EXPECT_EQ(AutoColourMode("", "truecolor", 8, false), ColourMode::kTrueColour);
+  EXPECT_EQ(AutoColourMode("", "24bit", 256, false), ColourMode::kTrueColour);
+  EXPECT_EQ(AutoColourMode("", "", 256, true), ColourMode::kTrueColour);
+  EXPECT_EQ(AutoColourMode("", "", 256, false), ColourMode::k256);
+  EXPECT_EQ(AutoColourMode("", "", 8, false), ColourMode::kNone);
+  EXPECT_EQ(AutoColourMode("", "", -1, false), ColourMode::kNone);
+}
+
+// The cube with one red face: the ansi dump shows that face's cells red and
+// the others in the default grey, at the cells' shade levels.
+TEST(AnsiFrame, CarriesEachFacesColour) {
+  Scene scene = test::LoadScene("data/cube.dat");
+  std::vector<Rgb> colours(scene.FaceCount(), Rgb{0.2F, 0.2F, 0.9F});
+  RenderOptions options;
+  const test::Frame frame = test::RenderFrame(scene, 0.3, 1.3, 40, 16, options);
+  const uint32_t someFace = frame.cells.FaceNumber(20, 8);
+  ASSERT_GT(someFace, 0U);
+  colours[someFace - 1] = Rgb{1, 0, 0};
+  std::string ansi;
+  AppendAnsiFrame(frame.cells, colours, options.ramp.LevelCount(), ColourMode::kTrueColour, ansi);
+  const TermColour red =
+      CellColour({1, 0, 0}, IntensityForLevel(frame.cells.Level(20, 8), options.ramp.LevelCount()),
+                 ColourMode::kTrueColour);
+  std::string redSgr;
+  AppendForegroundSgr(red, redSgr);
+  EXPECT_NE(ansi.find(redSgr), std::string::npos);
+  EXPECT_EQ(ansi.find("48;"), std::string::npos);  // the background stays the terminal's
+  // Without colours: the text frame exactly.
+  std::string none, text;
+  AppendAnsiFrame(frame.cells, colours, options.ramp.LevelCount(), ColourMode::kNone, none);
+  AppendTextFrame(frame.cells, text);
+  EXPECT_EQ(none, text);
+  // With colours, stripped of SGR: the text frame too.
+  EXPECT_EQ(std::regex_replace(ansi, std::regex("\x1b\\[[0-9;]*m"), ""), text);
+  // A mesh without colours: every face in the default colour.
+  std::string plain;
+  AppendAnsiFrame(frame.cells, {}, options.ramp.LevelCount(), ColourMode::k256, plain);
+  std::set<std::string> sequences;
+  const std::regex sgr("\x1b\\[38;5;([0-9]+)m");
+  for (auto it = std::sregex_iterator(plain.begin(), plain.end(), sgr);
+       it != std::sregex_iterator(); ++it) {
+    sequences.insert((*it)[1]);
+  }
+  std::set<std::string> expected;
+  for (int level = 0; level < options.ramp.LevelCount(); ++level) {
+    expected.insert(std::to_string(CellColour(kDefaultFaceColour,
+                                              IntensityForLevel(level, options.ramp.LevelCount()),
+                                              ColourMode::k256)
+                                       .index));
+  }
+  for (const std::string& seen : sequences) EXPECT_TRUE(expected.count(seen)) << seen;
+}
+
+}  // namespace
+}  // namespace termshade
