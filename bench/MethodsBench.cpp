@@ -60,9 +60,17 @@ std::vector<MethodCase> Methods() {
       {"zbuffer float geometry",
        with(Method::kZBuffer, [](RenderVariant& v) { v.floatGeometry = true; })},
       {"zbuffer 2x2 samples",
-       with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 2; }), false},
+       with(Method::kZBuffer,
+            [](RenderVariant& v) {
+              v.samples = {2, 2};
+            }),
+       false},
       {"zbuffer 4x4 samples",
-       with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 4; }), false},
+       with(Method::kZBuffer,
+            [](RenderVariant& v) {
+              v.samples = {4, 4};
+            }),
+       false},
   };
 }
 

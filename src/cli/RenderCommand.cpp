@@ -26,6 +26,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   if (!method) return UsageError("--method must be zbuffer, painter, cull, wire or auto");
   const auto shade = ParseShadeMode(options.shade);
   if (!shade) return UsageError("--shade must be contrast or lambert");
+  const auto glyphs = ParseGlyphMode(options.glyphs);
+  if (!glyphs)
+    return UsageError("--glyphs must be ramp, ascii, blocks, quadrants, sextants or braille");
   const auto format = ParseFrameFormat(options.format);
   if (!format) return UsageError("--format must be text, ansi or json");
   if (const auto problem = ShadeRamp::Problem(options.ramp))
@@ -59,6 +62,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.method = *method;
   renderOptions.shade = *shade;
   renderOptions.ramp = ShadeRamp(options.ramp);
+  renderOptions.glyphs = *glyphs;
+  renderOptions.twoColour = *format == FrameFormat::kAnsi;  // text and json have no colours
   renderOptions.cullBackFaces = !options.noCull;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
   ViewParams view = DefaultView(scene.diagonalModelUnits);

@@ -94,6 +94,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_option("--ramp", options.ramp,
                      "shade characters from dark to bright, UTF-8, one cell wide each "
                      "(default .:-=+*#%@; block elements, box drawing, braille and Latin-1 too)");
+  command
+      .add_option("--glyphs", options.glyphs,
+                  "ramp (default for render), ascii (shape-matched), blocks, quadrants, "
+                  "sextants or braille (SPEC 11)")
+      ->check(CLI::IsMember({"ramp", "ascii", "blocks", "quadrants", "sextants", "braille"}));
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
 }

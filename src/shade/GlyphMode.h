@@ -1,0 +1,32 @@
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace termshade {
+
+/// How a cell shows what lies inside it (SPEC 11).
+enum class GlyphMode { kRamp, kAscii, kBlocks, kQuadrants, kSextants, kBraille };
+
+constexpr int kGlyphModeCount = 6;
+
+std::string_view GlyphModeName(GlyphMode mode);
+std::optional<GlyphMode> ParseGlyphMode(std::string_view name);
+/// The next mode in the order above, wrapping (the viewer's key cycles with it).
+GlyphMode NextGlyphMode(GlyphMode mode);
+/// True for the modes drawn with characters outside ASCII (they need a UTF-8 terminal).
+bool NeedsUtf8(GlyphMode mode);
+
+/// Samples per cell: `across` columns by `down` rows at the centers of a regular grid.
+struct SampleGrid {
+  int across = 1;
+  int down = 1;
+  int Count() const { return across * down; }
+  bool operator==(const SampleGrid&) const = default;
+};
+
+/// The grid a mode's glyphs are chosen from: ramp 1x1, ascii 2x4, blocks 1x2,
+/// quadrants 2x2, sextants 2x3, braille 2x4.
+SampleGrid ModeSampleGrid(GlyphMode mode);
+
+}  // namespace termshade
