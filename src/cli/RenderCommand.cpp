@@ -76,6 +76,13 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   CellBuffer cells;
   depth.Resize(options.widthCells, options.heightCells);
   cells.Resize(options.widthCells, options.heightCells);
+  Renderer centerRenderer;  // json of a glyph mode: the one-sample frame beside it
+  RenderOptions centerOptions = renderOptions;
+  centerOptions.glyphs = GlyphMode::kRamp;
+  centerOptions.variant.samples = {1, 1};
+  CellBuffer centerCells(options.widthCells, options.heightCells);
+  DepthBuffer centerDepth;
+  centerDepth.Resize(options.widthCells, options.heightCells);
   std::string text;
   for (int frame = 0; frame < options.frames; ++frame) {
     ViewParams frameView = view;
@@ -87,7 +94,13 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     if (*format == FrameFormat::kText) AppendTextFrame(cells, text);
     if (*format == FrameFormat::kAnsi)
       AppendAnsiFrame(cells, renderOptions.ramp.LevelCount(), text);
-    if (*format == FrameFormat::kJson) {
+    if (*format == FrameFormat::kJson && renderer.LastSampleGrid().Count() > 1) {
+      // Several samples a cell: faces and depth at the centers come from a one-sample frame.
+      centerRenderer.Render(scene, camera, centerOptions, centerDepth, centerCells);
+      const JsonSamples samples{renderer.LastSampleGrid(), renderer.Samples(), centerCells,
+                                centerDepth};
+      AppendJsonFrame(cells, depth, scene, camera, renderOptions, text, &samples);
+    } else if (*format == FrameFormat::kJson) {
       AppendJsonFrame(cells, depth, scene, camera, renderOptions, text);
     }
     out.write(text.data(), static_cast<std::streamsize>(text.size()));

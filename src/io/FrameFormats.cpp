@@ -49,6 +49,34 @@ void AppendGrid(const CellBuffer& cells, std::string_view key, PerCell perCell, 
   out += ']';
 }
 
+// "glyphMode", "samples": [k, m] and "sampleFaces": per cell its k x m faces, row-major.
+void AppendSampleFaces(const CellBuffer& cells, const RenderOptions& options,
+                       const JsonSamples& samples, std::string& out) {
+  const int k = samples.grid.across, m = samples.grid.down;
+  out += ", \"glyphMode\": ";
+  AppendJsonString(GlyphModeName(options.glyphs), out);
+  out += ", \"samples\": [";
+  AppendNumber(k, out);
+  out += ", ";
+  AppendNumber(m, out);
+  out += ']';
+  AppendGrid(
+      cells, "sampleFaces",
+      [&](size_t i) {
+        const int col = static_cast<int>(i % cells.WidthCells());
+        const int row = static_cast<int>(i / cells.WidthCells());
+        out += '[';
+        for (int j = 0; j < m; ++j) {
+          for (int s = 0; s < k; ++s) {
+            if (j + s > 0) out += ',';
+            AppendNumber(samples.samples.FaceNumber(col * k + s, row * m + j), out);
+          }
+        }
+        out += ']';
+      },
+      out);
+}
+
 }  // namespace
 
 std::optional<FrameFormat> ParseFrameFormat(std::string_view name) {
@@ -67,13 +95,15 @@ void AppendTextFrame(const CellBuffer& cells, std::string& out) {
 
 void AppendAnsiFrame(const CellBuffer& cells, int levelCount, std::string& out) {
   for (int row = 0; row < cells.HeightCells(); ++row) {
-    int current = -2;  // the level whose colours are set; -1 is the background
+    int current = -2, currentBack = -2;  // the levels whose colours are set; -1: background
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const int level = cells.Level(col, row);
-      if (level != current) {
+      const int back = cells.BackLevel(col, row);
+      if (level != current || back != currentBack) {
         const int foreground = level < 0 ? 0 : FaceColour256(level, levelCount);
-        AppendSgr(foreground, kBackground256, out);
+        AppendSgr(foreground, back < 0 ? kBackground256 : FaceColour256(back, levelCount), out);
         current = level;
+        currentBack = back;
       }
       AppendUtf8(out, cells.Glyph(col, row));
     }
@@ -82,7 +112,8 @@ void AppendAnsiFrame(const CellBuffer& cells, int levelCount, std::string& out) 
 }
 
 void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Scene& scene,
-                     const Camera& camera, const RenderOptions& options, std::string& out) {
+                     const Camera& camera, const RenderOptions& options, std::string& out,
+                     const JsonSamples* samples) {
   const Mat4 eyeFromFile = EyeFromWorld(camera.view) * scene.worldFromFile;
   out += "{\"format\": \"termshade-frame/1\", \"cols\": ";
   AppendNumber(cells.WidthCells(), out);
@@ -117,15 +148,18 @@ void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Sc
     AppendJsonString(cells.RowText(row), out);
   }
   out += ']';
+  const CellBuffer& center = samples ? samples->center : cells;
+  const DepthBuffer& centerDepth = samples ? samples->centerDepth : depth;
   AppendGrid(
-      cells, "faces", [&](size_t i) { AppendNumber(cells.FaceNumbers()[i], out); }, out);
+      cells, "faces", [&](size_t i) { AppendNumber(center.FaceNumbers()[i], out); }, out);
   AppendGrid(
       cells, "depth",
       [&](size_t i) {
-        const float w = depth.At(i);
+        const float w = centerDepth.At(i);
         AppendNumber(w > 0.0F ? 1.0F / w : 0.0F, out);
       },
       out);
+  if (samples) AppendSampleFaces(cells, options, *samples, out);
   out += "}\n";
 }
 

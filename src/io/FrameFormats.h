@@ -21,11 +21,25 @@ std::optional<FrameFormat> ParseFrameFormat(std::string_view name);
 void AppendTextFrame(const CellBuffer& cells, std::string& out);
 
 /// The text frame with 256-colour SGR sequences (yellow faces, light blue
-/// background), reset at the end of every line.
+/// background; a cell's background face, as two-colour glyph modes give,
+/// in its shade), reset at the end of every line.
 void AppendAnsiFrame(const CellBuffer& cells, int levelCount, std::string& out);
 
-/// One `termshade-frame/1` JSON object on one line, ended by '\n'.
+/// A frame of several samples a cell, for the json dump (SPEC 11): the samples
+/// (grid.across x grid.down per cell) and a one-sample frame of the same view,
+/// whose faces and depth are those at each cell's center.
+struct JsonSamples {
+  SampleGrid grid;
+  const CellBuffer& samples;
+  const CellBuffer& center;
+  const DepthBuffer& centerDepth;
+};
+
+/// One `termshade-frame/1` JSON object on one line, ended by '\n'. With
+/// samples, also the glyph mode, `samples` [k, m] and `sampleFaces`: per
+/// cell the k x m sample faces, row-major.
 void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Scene& scene,
-                     const Camera& camera, const RenderOptions& options, std::string& out);
+                     const Camera& camera, const RenderOptions& options, std::string& out,
+                     const JsonSamples* samples = nullptr);
 
 }  // namespace termshade

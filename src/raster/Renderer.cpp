@@ -32,6 +32,15 @@ Method ResolvedMethod(const Scene& scene, Method method) {
   return scene.convexClosedSolid ? Method::kCull : Method::kZBuffer;
 }
 
+Camera SampleCamera(const Camera& camera, SampleGrid grid) {
+  Camera fine = camera;
+  fine.projection.d *= grid.across;
+  fine.projection.cx *= grid.across;
+  fine.projection.cy *= grid.down;
+  fine.projection.cellAspect *= static_cast<double>(grid.across) / grid.down;
+  return fine;
+}
+
 RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const RenderOptions& options,
                              DepthBuffer& depth, CellBuffer& cells) {
   const SampleGrid grid = FrameSampleGrid(options);
@@ -62,12 +71,7 @@ RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
                                     const RenderOptions& options, DepthBuffer& depth,
                                     CellBuffer& cells) {
   const int k = lastGrid_.across, m = lastGrid_.down;
-  // u' = k u and v' = m v: d and cx scale by k, cy by m, the aspect by k / m.
-  Camera fine = camera;
-  fine.projection.d *= k;
-  fine.projection.cx *= k;
-  fine.projection.cy *= m;
-  fine.projection.cellAspect *= static_cast<double>(k) / m;
+  const Camera fine = SampleCamera(camera, lastGrid_);
   fineCells_.Resize(cells.WidthCells() * k, cells.HeightCells() * m);
   fineDepth_.Resize(cells.WidthCells() * k, cells.HeightCells() * m);
   RenderOptions single = options;

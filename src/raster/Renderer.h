@@ -24,6 +24,10 @@ struct RenderStats {
 /// The method actually drawn: auto becomes cull or zbuffer for the scene.
 Method ResolvedMethod(const Scene& scene, Method method);
 
+/// The camera whose one-sample cells are the samples of `camera`'s cells on a
+/// k x m grid: u' = k u, v' = m v (d and cx scale by k, cy by m, the aspect by k / m).
+Camera SampleCamera(const Camera& camera, SampleGrid grid);
+
 /// The one geometry pipeline, world -> eye -> cells, for every front end.
 /// Keeps per-frame scratch arrays between frames, so a steady frame loop
 /// does not allocate.
