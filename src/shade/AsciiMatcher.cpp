@@ -30,7 +30,6 @@ void AsciiMatcher::Prepare(SampleGrid grid) {
   count_ = grid.Count();
   glyphs_.clear();
   vectors_.clear();
-  maxInk_.fill(0);
   // Step 1: each printable glyph's mean ink over each sample's region of the 8 x 16 map.
   const GlyphInkTable& table = DefaultInkTable();
   for (char32_t c = U'!'; c <= U'~'; ++c) {
@@ -48,8 +47,14 @@ void AsciiMatcher::Prepare(SampleGrid grid) {
       const int area = std::max(1, (x1 - x0) * (y1 - y0));
       const int mean = (sum + area / 2) / area;
       vectors_.push_back(mean);
-      maxInk_[static_cast<size_t>(n)] = std::max(maxInk_[static_cast<size_t>(n)], mean);
     }
+  }
+  // The brightest glyph's mean ink: what full intensity maps to (SPEC 12's ink range).
+  inkScale_ = 0;
+  for (size_t g = 0; g < glyphs_.size(); ++g) {
+    int sum = 0;
+    for (int n = 0; n < count_; ++n) sum += vectors_[g * static_cast<size_t>(count_) + n];
+    inkScale_ = std::max(inkScale_, sum / count_);
   }
   // Step 2: the contrast curve, and an empty cache.
   for (int max = 0; max < kLevels; ++max) {
@@ -109,7 +114,7 @@ char32_t AsciiMatcher::Nearest(const std::array<uint8_t, 32>& levels) const {
   for (int n = 0; n < count_; ++n) maxLevel = std::max<int>(maxLevel, levels[n]);
   std::array<int, 32> target{};
   for (int n = 0; n < count_; ++n) {
-    target[n] = enhanced_[levels[n]][maxLevel] * maxInk_[n] / 255;
+    target[n] = enhanced_[levels[n]][maxLevel] * inkScale_ / 255;
   }
   int64_t bestError = INT64_MAX;
   char32_t best = U'.';

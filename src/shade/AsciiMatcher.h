@@ -11,7 +11,8 @@ namespace termshade {
 /// Shape-matched ASCII (SPEC 11; Harri's "shape vectors"): each printable
 /// ASCII glyph becomes a vector of its measured ink (DefaultInkTable) over
 /// the regions a cell's samples sit in; a cell takes the glyph nearest its
-/// samples. Integer arithmetic; ties go to the lower code point. Results are
+/// samples (brightness scaled to the most mean ink any glyph has). Integer
+/// arithmetic; ties go to the lower code point. Results are
 /// memoized per quantized sample vector (4 bits a sample), so a frame costs
 /// one table probe per cell for the values seen before; the cache does not
 /// change any result.
@@ -40,7 +41,7 @@ class AsciiMatcher {
   int count_ = 0;
   std::vector<char32_t> glyphs_;
   std::vector<int> vectors_;  ///< glyph-major: count_ region inks, 0..255
-  std::array<int, 32> maxInk_{};
+  int inkScale_ = 0;          ///< the most mean ink a glyph has, 0..255
   std::array<std::array<int, kLevels>, kLevels> enhanced_{};  ///< [level][cell's max level]
   std::vector<Entry> cache_;
 };
