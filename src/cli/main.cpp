@@ -7,6 +7,7 @@
 #include <iostream>
 #include <regex>
 
+#include "FidelityBench.h"
 #include "LoadBench.h"
 #include "MethodsBench.h"
 #include "TerminalBench.h"
@@ -221,6 +222,22 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(1, 100));
   loadCommand->add_option("--dir", loadBench.directory,
                           "folder for the generated models (default: a temporary folder)");
+  termshade::FidelityBenchOptions fidelityBench;
+  CLI::App* fidelityCommand = benchCommand->add_subcommand(
+      "fidelity",
+      "blurred SSIM against the exact image, frame time and flicker of every glyph mode");
+  fidelityCommand->add_option("--frames", fidelityBench.frames, "views per scene (default 2)")
+      ->check(CLI::Range(1, 64));
+  fidelityCommand
+      ->add_option("--seconds", fidelityBench.secondsPerCase,
+                   "timing budget per mode and scene (default 0.2)")
+      ->check(CLI::Range(0.01, 60.0));
+  fidelityCommand->add_option("--csv", fidelityBench.csvPath,
+                              "CSV output (default bench-fidelity.csv)");
+  fidelityCommand->add_option("--svg", fidelityBench.svgPath,
+                              "plot output (default bench-fidelity.svg)");
+  fidelityCommand->add_option("--data", fidelityBench.dataDirectory,
+                              "the scenes' directory (default data)");
 
   bool done = false;
   const int parseCode = ParseOrExit(app, argc, argv, done);
@@ -228,6 +245,7 @@ int Run(int argc, char** argv) {
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
+  if (fidelityCommand->parsed()) return termshade::RunFidelityBench(fidelityBench);
   if (terminalCommand->parsed()) {
     terminalBench.viewerPath = SelfPath();
     return termshade::RunTerminalBench(terminalBench);
