@@ -237,3 +237,31 @@ TEST(GlyphModes, AsciiIsRepeatableAndIndependentOfTheCache) {
 
 }  // namespace
 }  // namespace termshade
+
+namespace termshade {
+namespace {
+
+TEST(GlyphModes, TheViewerPicksWhatTheTerminalCanDraw) {
+  EXPECT_EQ(PickGlyphMode(false, true, "xterm-kitty", ""), GlyphMode::kAscii);
+  EXPECT_EQ(PickGlyphMode(true, false, "xterm-kitty", ""), GlyphMode::kAscii);
+  EXPECT_EQ(PickGlyphMode(true, true, "xterm-kitty", ""), GlyphMode::kSextants);
+  EXPECT_EQ(PickGlyphMode(true, true, "foot", ""), GlyphMode::kSextants);
+  EXPECT_EQ(PickGlyphMode(true, true, "xterm-256color", "WezTerm"), GlyphMode::kSextants);
+  EXPECT_EQ(PickGlyphMode(true, true, "xterm-256color", "Apple_Terminal"), GlyphMode::kQuadrants);
+  EXPECT_EQ(PickGlyphMode(true, true, "tmux-256color", ""), GlyphMode::kQuadrants);
+}
+
+TEST(GlyphModes, CyclingVisitsEveryModeOnce) {
+  std::set<GlyphMode> seen;
+  GlyphMode mode = GlyphMode::kRamp;
+  for (int i = 0; i < kGlyphModeCount; ++i, mode = NextGlyphMode(mode)) {
+    seen.insert(mode);
+    EXPECT_EQ(ParseGlyphMode(GlyphModeName(mode)), mode);
+  }
+  EXPECT_EQ(mode, GlyphMode::kRamp);
+  EXPECT_EQ(seen.size(), size_t{kGlyphModeCount});
+  EXPECT_FALSE(ParseGlyphMode("sixel"));
+}
+
+}  // namespace
+}  // namespace termshade

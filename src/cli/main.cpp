@@ -97,8 +97,8 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
                      "(default .:-=+*#%@; block elements, box drawing, braille and Latin-1 too)");
   command
       .add_option("--glyphs", options.glyphs,
-                  "ramp (default for render), ascii (shape-matched), blocks, quadrants, "
-                  "sextants or braille (SPEC 11)")
+                  "ramp, ascii (shape-matched), blocks, quadrants, sextants or braille "
+                  "(render: default ramp; viewer: picked for the terminal; g cycles)")
       ->check(CLI::IsMember({"ramp", "ascii", "blocks", "quadrants", "sextants", "braille"}));
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
@@ -118,6 +118,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   }
   viewer.render.ramp = termshade::ShadeRamp(look.ramp);
   viewer.render.cullBackFaces = !look.noCull;
+  if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   return termshade::RunViewer(viewer);
 }
 
@@ -132,6 +133,7 @@ int Run(int argc, char** argv) {
 
   // The viewer: termshade [MODEL...]
   RenderCommandOptions viewerLook;
+  viewerLook.glyphs.clear();  // the viewer picks one for the terminal unless asked
   std::vector<std::string> models;
   double viewerAspect = 0.0;
   bool mono = false;

@@ -45,6 +45,21 @@ bool NeedsUtf8(GlyphMode mode) {
   return mode != GlyphMode::kRamp && mode != GlyphMode::kAscii;
 }
 
+GlyphMode PickGlyphMode(bool utf8, bool colour, std::string_view term,
+                        std::string_view termProgram) {
+  if (!utf8 || !colour) return GlyphMode::kAscii;
+  static constexpr std::string_view kSextantTerms[] = {"kitty", "foot", "wezterm", "ghostty",
+                                                       "contour"};
+  for (std::string_view known : kSextantTerms) {
+    if (term.find(known) != std::string_view::npos) return GlyphMode::kSextants;
+  }
+  static constexpr std::string_view kSextantPrograms[] = {"WezTerm", "ghostty"};
+  for (std::string_view known : kSextantPrograms) {
+    if (termProgram == known) return GlyphMode::kSextants;
+  }
+  return GlyphMode::kQuadrants;
+}
+
 SampleGrid ModeSampleGrid(GlyphMode mode) {
   return InfoOf(mode).grid;
 }

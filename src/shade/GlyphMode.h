@@ -17,6 +17,13 @@ GlyphMode NextGlyphMode(GlyphMode mode);
 /// True for the modes drawn with characters outside ASCII (they need a UTF-8 terminal).
 bool NeedsUtf8(GlyphMode mode);
 
+/// The mode a viewer starts in when none was asked for: sextants where the
+/// terminal is known to draw them (kitty, foot, WezTerm, ghostty, contour) with
+/// colour and UTF-8, quadrants elsewhere with both, shape-matched ascii without
+/// colour (its glyphs carry the shade) or outside a UTF-8 locale.
+GlyphMode PickGlyphMode(bool utf8, bool colour, std::string_view term,
+                        std::string_view termProgram);
+
 /// Samples per cell: `across` columns by `down` rows at the centers of a regular grid.
 struct SampleGrid {
   int across = 1;

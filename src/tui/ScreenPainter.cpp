@@ -43,7 +43,7 @@ std::pair<int, int> ScreenPainter::PaintPrompt(const std::string& label, const L
 }
 
 void ScreenPainter::PaintHelp(ScreenGrid& grid) const {
-  static constexpr std::array<const char*, 21> kLines{
+  static constexpr std::array<const char*, 22> kLines{
       "termshade keys",
       "",
       "arrows, h j k l  orbit (0.1 rad a press)",
@@ -56,6 +56,7 @@ void ScreenPainter::PaintHelp(ScreenGrid& grid) const {
       "s                shading: contrast / lambert",
       "b                back faces: culled / drawn",
       "c                colour on / off",
+      "g                glyphs: ramp ascii blocks ...",
       "L                light mode: arrows move the sun",
       "space            turntable on / off",
       "a A              cell aspect - / +",

@@ -296,7 +296,9 @@ class EventLoop {
     const std::string method = std::string(MethodName(render.method)) + " " +
                                std::string(ShadeModeName(render.shade)) +
                                (render.cullBackFaces ? "" : " 2-sided");
+    // The glyph mode the viewer picked stays visible beside a message.
     return ComposeStatusLine({lead,
+                              {std::string(GlyphModeName(render.glyphs)), 1, false},
                               {method, 3, false},
                               {drawnText, 4, false},
                               {viewText, 1, true},
@@ -353,6 +355,13 @@ int RunViewer(const ViewerOptions& options) {
               << "\n";
     return 2;
   }
+  const bool utf8 = codeset == "UTF-8";
+  const bool colour = !effective.monochrome && session.Colours() != ColourSupport::kNone;
+  const char* term = std::getenv("TERM");
+  const char* termProgram = std::getenv("TERM_PROGRAM");
+  state.SetGlyphs(options.glyphs.value_or(PickGlyphMode(utf8, colour, term ? term : "",
+                                                        termProgram ? termProgram : "")),
+                  utf8);
   EventLoop loop(state, session);
   loop.Run();
   return 0;

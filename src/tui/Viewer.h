@@ -14,6 +14,7 @@ struct ViewerOptions {
   std::optional<double> cellAspect;     ///< unset: from the terminal, else 2.0
   bool monochrome = false;
   RenderOptions render;
+  std::optional<GlyphMode> glyphs;  ///< unset: PickGlyphMode for the terminal
 };
 
 /// Runs the full-screen viewer until the user quits; returns the exit code.

@@ -42,6 +42,11 @@ class ViewerState {
   std::string ModelLabel() const;
   size_t ModelCount() const { return paths_.size(); }
   bool Colour() const { return colour_; }
+  /// The glyph mode, and whether the terminal's locale can show the modes beyond ASCII.
+  void SetGlyphs(GlyphMode mode, bool utf8) {
+    render_.glyphs = mode;
+    utf8_ = utf8;
+  }
   bool LightMode() const { return lightMode_; }
   bool Turntable() const { return turntable_; }
   bool HelpShown() const { return help_; }
@@ -67,6 +72,7 @@ class ViewerState {
   double cellAspect_ = 2.0;
   RenderOptions render_;
   bool colour_ = true;
+  bool utf8_ = true;
   bool lightMode_ = false;
   bool turntable_ = false;
   bool help_ = false;
