@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "SpeedErrorPlot.h"
+#include "Statistics.h"
 #include "geometry/FitCamera.h"
 #include "geometry/RayCast.h"
 #include "geometry/ViewingTransform.h"
@@ -60,9 +61,17 @@ std::vector<MethodCase> Methods() {
       {"zbuffer float geometry",
        with(Method::kZBuffer, [](RenderVariant& v) { v.floatGeometry = true; })},
       {"zbuffer 2x2 samples",
-       with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 2; }), false},
+       with(Method::kZBuffer,
+            [](RenderVariant& v) {
+              v.samples = {2, 2};
+            }),
+       false},
       {"zbuffer 4x4 samples",
-       with(Method::kZBuffer, [](RenderVariant& v) { v.samplesPerAxis = 4; }), false},
+       with(Method::kZBuffer,
+            [](RenderVariant& v) {
+              v.samples = {4, 4};
+            }),
+       false},
   };
 }
 
@@ -108,12 +117,6 @@ std::vector<NamedScene> Scenes(const std::string& dataDirectory) {
   scenes.push_back({"sphere 20k tris", PrepareScene(GenerateSphere(100, 100))});
   scenes.push_back({"sphere 200k tris", PrepareScene(GenerateSphere(317, 317))});
   return scenes;
-}
-
-double Median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t mid = values.size() / 2;
-  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
 // Reference shade of each cell: the mean Lambert intensity of 4 x 4 exact ray
@@ -248,6 +251,8 @@ CaseResult Measure(const NamedScene& named, const MethodCase& method,
   return result;
 }
 
+}  // namespace
+
 std::string MachineDescription() {
   utsname name{};
   uname(&name);
@@ -261,8 +266,6 @@ std::string MachineDescription() {
   }
   return model + ", " + name.sysname + " " + name.release + ", 1 thread";
 }
-
-}  // namespace
 
 int RunMethodsBench(const MethodsBenchOptions& options) {
   const std::vector<NamedScene> scenes = Scenes(options.dataDirectory);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace termshade {
 
@@ -17,5 +18,8 @@ struct MethodsBenchOptions {
 };
 
 int RunMethodsBench(const MethodsBenchOptions& options);
+
+/// CPU model, kernel and thread count, for the reports' headers.
+std::string MachineDescription();
 
 }  // namespace termshade

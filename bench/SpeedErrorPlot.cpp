@@ -23,7 +23,8 @@ struct Panel {
   double X(double ms) const {
     return left + width * (std::log10(ms) - xLowLog) / (xHighLog - xLowLog);
   }
-  double Y(double value) const { return top + height * (1.0 - value / yHigh); }
+  double yLow = 0.0;
+  double Y(double value) const { return top + height * (1.0 - (value - yLow) / (yHigh - yLow)); }
 };
 
 void DrawAxes(std::ostringstream& svg, const Panel& p) {
@@ -36,7 +37,7 @@ void DrawAxes(std::ostringstream& svg, const Panel& p) {
         << "' font-size='11' text-anchor='middle'>" << std::pow(10.0, decade) << "</text>\n";
   }
   for (int i = 0; i <= 4; ++i) {
-    const double value = p.yHigh * i / 4;
+    const double value = p.yLow + (p.yHigh - p.yLow) * i / 4;
     const double y = p.Y(value);
     svg << "<line x1='" << p.left << "' y1='" << y << "' x2='" << p.left + p.width << "' y2='" << y
         << "' stroke='#eee'/><text x='" << p.left - 6 << "' y='" << y + 4
@@ -49,7 +50,57 @@ void DrawAxes(std::ostringstream& svg, const Panel& p) {
       << p.top + p.height / 2 << ")'>" << p.yLabel << "</text>\n";
 }
 
+double LogLow(double ms) {
+  return std::floor(std::log10(std::max(ms, 1e-4)));
+}
+double LogHigh(double ms) {
+  return std::ceil(std::log10(std::max(ms, 1e-3)));
+}
+
 }  // namespace
+
+void WriteSpeedFidelityPlot(const std::vector<FidelityPoint>& points, const std::string& machine,
+                            const std::string& path) {
+  std::map<std::string, size_t> modeColour;
+  double lowMs = 1e9, highMs = 1e-9, lowSsim = 1.0;
+  for (const FidelityPoint& p : points) {
+    modeColour.try_emplace(p.mode, modeColour.size() % kColours.size());
+    lowMs = std::min(lowMs, p.medianMs);
+    highMs = std::max(highMs, p.medianMs);
+    lowSsim = std::min(lowSsim, p.ssim);
+  }
+  Panel panel{70, 50, 700, 420, LogLow(lowMs), LogHigh(highMs), 1.0, "blurred SSIM (1 = exact)"};
+  panel.yLow = std::floor(std::max(0.0, lowSsim) * 10) / 10;
+  std::ostringstream svg;
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='1000' height='540' "
+         "font-family='sans-serif'>\n"
+      << "<rect width='1000' height='540' fill='white'/>\n"
+      << "<text x='20' y='24' font-size='15'>termshade: speed against fidelity, each point one "
+         "glyph mode on one scene (160x48 cells). "
+      << machine << "</text>\n";
+  DrawAxes(svg, panel);
+  for (const FidelityPoint& p : points) {
+    // Colour modes filled, mono modes as rings.
+    const bool colour = p.mode.find("colour") != std::string::npos;
+    const char* c = kColours[modeColour[p.mode] / 2 % kColours.size()];
+    svg << "<circle cx='" << panel.X(p.medianMs) << "' cy='" << panel.Y(p.ssim) << "' r='4' "
+        << (colour ? "fill='" + std::string(c) + "'"
+                   : "fill='none' stroke='" + std::string(c) + "'")
+        << "><title>" << p.mode << " / " << p.scene << "</title></circle>\n";
+  }
+  int row = 0;
+  for (const auto& [mode, colour] : modeColour) {
+    const int y = 60 + 18 * row++;
+    const char* c = kColours[colour / 2 % kColours.size()];
+    const bool filled = mode.find("colour") != std::string::npos;
+    svg << "<circle cx='800' cy='" << y - 4 << "' r='5' "
+        << (filled ? "fill='" + std::string(c) + "'"
+                   : "fill='none' stroke='" + std::string(c) + "'")
+        << "/><text x='812' y='" << y << "' font-size='12'>" << mode << "</text>\n";
+  }
+  svg << "</svg>\n";
+  std::ofstream(path) << svg.str();
+}
 
 void WriteSpeedErrorPlot(const std::vector<PlotPoint>& points, const std::string& machine,
                          const std::string& path) {
@@ -66,8 +117,7 @@ void WriteSpeedErrorPlot(const std::vector<PlotPoint>& points, const std::string
     const double step = std::pow(10.0, std::floor(std::log10(std::max(v, 1e-3))));
     return std::ceil(v / step) * step;
   };
-  const double xLow = std::floor(std::log10(std::max(lowMs, 1e-4))),
-               xHigh = std::ceil(std::log10(std::max(highMs, 1e-3)));
+  const double xLow = LogLow(lowMs), xHigh = LogHigh(highMs);
   const Panel facePanel{
       70, 50, 420, 320, xLow, xHigh, roundUp(std::max(highFace, 0.1)), "face error, % of cells"};
   const Panel shadePanel{570,

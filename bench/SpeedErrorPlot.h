@@ -19,4 +19,16 @@ struct PlotPoint {
 void WriteSpeedErrorPlot(const std::vector<PlotPoint>& points, const std::string& machine,
                          const std::string& path);
 
+/// One glyph mode on one scene.
+struct FidelityPoint {
+  std::string scene;
+  std::string mode;
+  double medianMs = 0.0;
+  double ssim = 0.0;  ///< blurred SSIM against the exact image (SPEC 12)
+};
+
+/// Writes an SVG of time per frame (log scale) against blurred SSIM, one colour per mode.
+void WriteSpeedFidelityPlot(const std::vector<FidelityPoint>& points, const std::string& machine,
+                            const std::string& path);
+
 }  // namespace termshade

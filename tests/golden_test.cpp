@@ -57,6 +57,41 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GoldenFrames, testing::ValuesIn(GeneratedSceneN
                            return info.param;
                          });
 
+// Glyph modes (SPEC 11): each mode, the default view, without and with two colours
+// (the colours themselves are not in a text frame, but the split chooses the glyphs).
+class GlyphGoldenFrames : public testing::TestWithParam<std::string> {};
+
+TEST_P(GlyphGoldenFrames, MatchEveryGlyphMode) {
+  const Scene scene = test::LoadScene("data/" + GetParam() + ".dat");
+  const bool update = std::getenv("TERMSHADE_UPDATE_GOLDEN") != nullptr;
+  for (GlyphMode mode : {GlyphMode::kAscii, GlyphMode::kBlocks, GlyphMode::kQuadrants,
+                         GlyphMode::kSextants, GlyphMode::kBraille}) {
+    for (bool twoColour : {false, true}) {
+      if (twoColour && mode == GlyphMode::kBraille) continue;  // braille: coverage either way
+      RenderOptions options;
+      options.glyphs = mode;
+      options.twoColour = twoColour;
+      const std::string actual =
+          test::RenderFrame(scene, kViews[0].theta, kViews[0].phi, 80, 24, options).Text();
+      const std::string path =
+          SourcePath("tests/golden/" + GetParam() + ".glyphs-" + std::string(GlyphModeName(mode)) +
+                     (twoColour ? ".colour" : "") + ".txt");
+      if (update) {
+        std::ofstream(path, std::ios::binary) << actual;
+        continue;
+      }
+      EXPECT_EQ(ReadFile(path), actual)
+          << "golden frame " << path << " differs; the actual frame:\n"
+          << actual << "(run with TERMSHADE_UPDATE_GOLDEN=1 to accept)";
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, GlyphGoldenFrames, testing::ValuesIn(GeneratedSceneNames()),
+                         [](const testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
+
 TEST(GoldenFrames, RenderingIsRepeatable) {
   const Scene scene = test::LoadScene("data/sphere_cone.dat");
   const RenderOptions options;

@@ -28,6 +28,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   if (!method) return UsageError("--method must be zbuffer, painter, cull, wire or auto");
   const auto shade = ParseShadeMode(options.shade);
   if (!shade) return UsageError("--shade must be contrast or lambert");
+  const auto glyphs = ParseGlyphMode(options.glyphs);
+  if (!glyphs)
+    return UsageError("--glyphs must be ramp, ascii, blocks, quadrants, sextants or braille");
   const auto format = ParseFrameFormat(options.format);
   if (!format) return UsageError("--format must be text, ansi or json");
   if (const auto problem = ShadeRamp::Problem(options.ramp))
@@ -76,6 +79,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.method = *method;
   renderOptions.shade = *shade;
   renderOptions.ramp = ShadeRamp(options.ramp);
+  renderOptions.glyphs = *glyphs;
+  renderOptions.twoColour = *format == FrameFormat::kAnsi;  // text and json have no colours
   renderOptions.cullBackFaces = !options.noCull;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
   ViewParams view = DefaultView(scene.diagonalModelUnits);
@@ -88,6 +93,13 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   CellBuffer cells;
   depth.Resize(options.widthCells, options.heightCells);
   cells.Resize(options.widthCells, options.heightCells);
+  Renderer centerRenderer;  // json of a glyph mode: the one-sample frame beside it
+  RenderOptions centerOptions = renderOptions;
+  centerOptions.glyphs = GlyphMode::kRamp;
+  centerOptions.variant.samples = {1, 1};
+  CellBuffer centerCells(options.widthCells, options.heightCells);
+  DepthBuffer centerDepth;
+  centerDepth.Resize(options.widthCells, options.heightCells);
   std::string text;
   for (int frame = 0; frame < options.frames; ++frame) {
     ViewParams frameView = view;
@@ -101,7 +113,13 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       AppendAnsiFrame(cells, scene.mesh.faceColors, renderOptions.ramp.LevelCount(),
                       ResolveColourMode(*colourMode), text);
     }
-    if (*format == FrameFormat::kJson) {
+    if (*format == FrameFormat::kJson && renderer.LastSampleGrid().Count() > 1) {
+      // Several samples a cell: faces and depth at the centers come from a one-sample frame.
+      centerRenderer.Render(scene, camera, centerOptions, centerDepth, centerCells);
+      const JsonSamples samples{renderer.LastSampleGrid(), renderer.Samples(), centerCells,
+                                centerDepth};
+      AppendJsonFrame(cells, depth, scene, camera, renderOptions, text, &samples);
+    } else if (*format == FrameFormat::kJson) {
       AppendJsonFrame(cells, depth, scene, camera, renderOptions, text);
     }
     if (file) {

@@ -19,6 +19,7 @@ struct RenderCommandOptions {
   std::string method = "zbuffer";
   std::string shade = "contrast";
   std::string ramp = ShadeRamp::kDefaultGlyphs;
+  std::string glyphs = "ramp";
   std::string format = "text";
   std::string outputPath;  ///< empty: stdout
   int frames = 1;

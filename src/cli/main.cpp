@@ -7,6 +7,7 @@
 #include <iostream>
 #include <regex>
 
+#include "FidelityBench.h"
 #include "LoadBench.h"
 #include "MethodsBench.h"
 #include "TerminalBench.h"
@@ -105,6 +106,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_option("--ramp", options.ramp,
                      "shade characters from dark to bright, UTF-8, one cell wide each "
                      "(default .:-=+*#%@; block elements, box drawing, braille and Latin-1 too)");
+  command
+      .add_option("--glyphs", options.glyphs,
+                  "ramp, ascii (shape-matched), blocks, quadrants, sextants or braille "
+                  "(render: default ramp; viewer: picked for the terminal; g cycles)")
+      ->check(CLI::IsMember({"ramp", "ascii", "blocks", "quadrants", "sextants", "braille"}));
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
   command
@@ -131,6 +137,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   }
   viewer.render.ramp = termshade::ShadeRamp(look.ramp);
   viewer.render.cullBackFaces = !look.noCull;
+  if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   return termshade::RunViewer(viewer);
 }
 
@@ -146,6 +153,7 @@ int Run(int argc, char** argv) {
 
   // The viewer: termshade [MODEL...]
   RenderCommandOptions viewerLook;
+  viewerLook.glyphs.clear();  // the viewer picks one for the terminal unless asked
   std::vector<std::string> models;
   double viewerAspect = 0.0;
   app.add_option("models", models, "model files (.dat, or .obj .stl .ply .off ... via Assimp)")
@@ -275,6 +283,25 @@ int Run(int argc, char** argv) {
       ->add_option("--dir", loadBench.directory,
                    "folder for the generated models (default: a temporary folder)")
       ->type_name("DIR");
+  termshade::FidelityBenchOptions fidelityBench;
+  CLI::App* fidelityCommand = benchCommand->add_subcommand(
+      "fidelity",
+      "blurred SSIM against the exact image, frame time and flicker of every glyph mode");
+  fidelityCommand->add_option("--frames", fidelityBench.frames, "views per scene (default 2)")
+      ->check(CLI::Range(1, 64));
+  fidelityCommand
+      ->add_option("--seconds", fidelityBench.secondsPerCase,
+                   "timing budget per mode and scene (default 0.2)")
+      ->check(CLI::Range(0.01, 60.0));
+  fidelityCommand
+      ->add_option("--csv", fidelityBench.csvPath, "CSV output (default bench-fidelity.csv)")
+      ->type_name("FILE");
+  fidelityCommand
+      ->add_option("--svg", fidelityBench.svgPath, "plot output (default bench-fidelity.svg)")
+      ->type_name("FILE");
+  fidelityCommand
+      ->add_option("--data", fidelityBench.dataDirectory, "the scenes' directory (default data)")
+      ->type_name("DIR");
 
   termshade::AddExamples(app);
   bool done = false;
@@ -284,6 +311,7 @@ int Run(int argc, char** argv) {
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
+  if (fidelityCommand->parsed()) return termshade::RunFidelityBench(fidelityBench);
   if (terminalCommand->parsed()) {
     if (!terminalBench.modelPath.empty()) {  // a model that cannot load gives no meaningful table
       const termshade::Loaded<termshade::Mesh> mesh =

@@ -27,17 +27,22 @@ void AppendJsonString(std::string_view text, std::string& out) {
 
 }  // namespace
 
-void AppendForegroundSgr(const TermColour& colour, std::string& out) {
+namespace {
+
+// SGR for one colour plane: 38/39 for the foreground, 48/49 for the background.
+void AppendColourSgr(const TermColour& colour, char plane, std::string& out) {
+  out += "\x1b[";
+  out += plane;
   switch (colour.kind) {
     case TermColour::Kind::kDefault:
-      out += "\x1b[39m";
+      out += "9m";
       return;
     case TermColour::Kind::kIndexed:
-      out += "\x1b[38;5;";
+      out += "8;5;";
       AppendNumber(static_cast<int>(colour.index), out);
       break;
     case TermColour::Kind::kRgb:
-      out += "\x1b[38;2;";
+      out += "8;2;";
       AppendNumber(static_cast<int>(colour.rgb.r), out);
       out += ';';
       AppendNumber(static_cast<int>(colour.rgb.g), out);
@@ -46,6 +51,16 @@ void AppendForegroundSgr(const TermColour& colour, std::string& out) {
       break;
   }
   out += 'm';
+}
+
+}  // namespace
+
+void AppendForegroundSgr(const TermColour& colour, std::string& out) {
+  AppendColourSgr(colour, '3', out);
+}
+
+void AppendBackgroundSgr(const TermColour& colour, std::string& out) {
+  AppendColourSgr(colour, '4', out);
 }
 
 namespace {
@@ -64,6 +79,34 @@ void AppendGrid(const CellBuffer& cells, std::string_view key, PerCell perCell, 
     out += ']';
   }
   out += ']';
+}
+
+// "glyphMode", "samples": [k, m] and "sampleFaces": per cell its k x m faces, row-major.
+void AppendSampleFaces(const CellBuffer& cells, const RenderOptions& options,
+                       const JsonSamples& samples, std::string& out) {
+  const int k = samples.grid.across, m = samples.grid.down;
+  out += ", \"glyphMode\": ";
+  AppendJsonString(GlyphModeName(options.glyphs), out);
+  out += ", \"samples\": [";
+  AppendNumber(k, out);
+  out += ", ";
+  AppendNumber(m, out);
+  out += ']';
+  AppendGrid(
+      cells, "sampleFaces",
+      [&](size_t i) {
+        const int col = static_cast<int>(i % cells.WidthCells());
+        const int row = static_cast<int>(i / cells.WidthCells());
+        out += '[';
+        for (int j = 0; j < m; ++j) {
+          for (int s = 0; s < k; ++s) {
+            if (j + s > 0) out += ',';
+            AppendNumber(samples.samples.FaceNumber(col * k + s, row * m + j), out);
+          }
+        }
+        out += ']';
+      },
+      out);
 }
 
 }  // namespace
@@ -86,23 +129,31 @@ void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, 
                      ColourMode mode, std::string& out) {
   CellColourMap colours(faceColours, levelCount, mode);
   for (int row = 0; row < cells.HeightCells(); ++row) {
-    TermColour current;  // the terminal's default until a face sets one
+    TermColour current, currentBack;  // the terminal's defaults until a cell sets one
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const int level = cells.Level(col, row);
-      if (level >= 0 && mode != ColourMode::kNone) {  // the background keeps the default
+      if (level >= 0 && mode != ColourMode::kNone) {  // a blank cell keeps the colour it has
         const TermColour wanted = colours.ForFace(cells.FaceNumber(col, row), level);
         if (!(wanted == current)) AppendForegroundSgr(wanted, out);
         current = wanted;
       }
+      // Two-colour glyph modes give a background face; others keep the terminal's.
+      const int backLevel = cells.BackLevel(col, row);
+      const TermColour wantedBack = backLevel >= 0 && mode != ColourMode::kNone
+                                        ? colours.ForFace(cells.BackFaceNumber(col, row), backLevel)
+                                        : TermColour{};
+      if (!(wantedBack == currentBack)) AppendBackgroundSgr(wantedBack, out);
+      currentBack = wantedBack;
       AppendUtf8(out, cells.Glyph(col, row));
     }
-    if (!(current == TermColour{})) out += "\x1b[0m";
+    if (!(current == TermColour{}) || !(currentBack == TermColour{})) out += "\x1b[0m";
     out += '\n';
   }
 }
 
 void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Scene& scene,
-                     const Camera& camera, const RenderOptions& options, std::string& out) {
+                     const Camera& camera, const RenderOptions& options, std::string& out,
+                     const JsonSamples* samples) {
   const Mat4 eyeFromFile = EyeFromWorld(camera.view) * scene.worldFromFile;
   out += "{\"format\": \"termshade-frame/1\", \"cols\": ";
   AppendNumber(cells.WidthCells(), out);
@@ -137,15 +188,18 @@ void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Sc
     AppendJsonString(cells.RowText(row), out);
   }
   out += ']';
+  const CellBuffer& center = samples ? samples->center : cells;
+  const DepthBuffer& centerDepth = samples ? samples->centerDepth : depth;
   AppendGrid(
-      cells, "faces", [&](size_t i) { AppendNumber(cells.FaceNumbers()[i], out); }, out);
+      cells, "faces", [&](size_t i) { AppendNumber(center.FaceNumbers()[i], out); }, out);
   AppendGrid(
       cells, "depth",
       [&](size_t i) {
-        const float w = depth.At(i);
+        const float w = centerDepth.At(i);
         AppendNumber(w > 0.0F ? 1.0F / w : 0.0F, out);
       },
       out);
+  if (samples) AppendSampleFaces(cells, options, *samples, out);
   out += "}\n";
 }
 

@@ -13,6 +13,10 @@ void CellBuffer::Resize(int widthCells, int heightCells) {
   glyphs_.resize(count);
   faceNumbers_.resize(count);
   levels_.resize(count);
+  intensities_.resize(count);
+  backFaceNumbers_.resize(count);
+  backLevels_.resize(count);
+  backIntensities_.resize(count);
   Clear();
 }
 
@@ -20,6 +24,10 @@ void CellBuffer::Clear() {
   std::fill(glyphs_.begin(), glyphs_.end(), U' ');
   std::fill(faceNumbers_.begin(), faceNumbers_.end(), 0U);
   std::fill(levels_.begin(), levels_.end(), int16_t{-1});
+  std::fill(intensities_.begin(), intensities_.end(), uint8_t{0});
+  std::fill(backFaceNumbers_.begin(), backFaceNumbers_.end(), 0U);
+  std::fill(backLevels_.begin(), backLevels_.end(), int16_t{-1});
+  std::fill(backIntensities_.begin(), backIntensities_.end(), uint8_t{0});
 }
 
 std::string CellBuffer::RowText(int row) const {

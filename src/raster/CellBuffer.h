@@ -9,6 +9,13 @@ namespace termshade {
 /// What a frame shows, cell by cell (row-major): the glyph (a code point), the 1-based face
 /// seen at the cell's sample (0 = background) and its shade level (-1 = none).
 /// The one buffer that both text dumps and the terminal screen are made from.
+///
+/// Colours come as (face, intensity) pairs, so one mapping from face colour and
+/// intensity serves both: the foreground (the glyph's ink: FaceNumber, Level,
+/// Intensity) and the background (BackFaceNumber, BackLevel, BackIntensity;
+/// face 0 = the terminal's background). Single-sample frames have no background
+/// face; the glyph modes with two colours (SPEC 11) fill it. With several samples
+/// a cell's FaceNumber is the foreground's face: the one most of its inked samples show.
 class CellBuffer {
  public:
   CellBuffer() = default;
@@ -25,6 +32,11 @@ class CellBuffer {
   char32_t Glyph(int col, int row) const { return glyphs_[Index(col, row)]; }
   uint32_t FaceNumber(int col, int row) const { return faceNumbers_[Index(col, row)]; }
   int16_t Level(int col, int row) const { return levels_[Index(col, row)]; }
+  /// Foreground intensity, 0..255 (255 = intensity 1).
+  uint8_t Intensity(int col, int row) const { return intensities_[Index(col, row)]; }
+  uint32_t BackFaceNumber(int col, int row) const { return backFaceNumbers_[Index(col, row)]; }
+  int16_t BackLevel(int col, int row) const { return backLevels_[Index(col, row)]; }
+  uint8_t BackIntensity(int col, int row) const { return backIntensities_[Index(col, row)]; }
 
   std::vector<char32_t>& Glyphs() { return glyphs_; }
   std::vector<uint32_t>& FaceNumbers() { return faceNumbers_; }
@@ -32,6 +44,14 @@ class CellBuffer {
   const std::vector<char32_t>& Glyphs() const { return glyphs_; }
   const std::vector<uint32_t>& FaceNumbers() const { return faceNumbers_; }
   const std::vector<int16_t>& Levels() const { return levels_; }
+  std::vector<uint8_t>& Intensities() { return intensities_; }
+  const std::vector<uint8_t>& Intensities() const { return intensities_; }
+  std::vector<uint32_t>& BackFaceNumbers() { return backFaceNumbers_; }
+  std::vector<int16_t>& BackLevels() { return backLevels_; }
+  std::vector<uint8_t>& BackIntensities() { return backIntensities_; }
+  const std::vector<uint32_t>& BackFaceNumbers() const { return backFaceNumbers_; }
+  const std::vector<int16_t>& BackLevels() const { return backLevels_; }
+  const std::vector<uint8_t>& BackIntensities() const { return backIntensities_; }
 
   /// Row r as UTF-8 text, exactly WidthCells() characters.
   std::string RowText(int row) const;
@@ -42,6 +62,10 @@ class CellBuffer {
   std::vector<char32_t> glyphs_;
   std::vector<uint32_t> faceNumbers_;
   std::vector<int16_t> levels_;
+  std::vector<uint8_t> intensities_;
+  std::vector<uint32_t> backFaceNumbers_;
+  std::vector<int16_t> backLevels_;
+  std::vector<uint8_t> backIntensities_;
 };
 
 }  // namespace termshade

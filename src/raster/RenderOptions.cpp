@@ -1,5 +1,6 @@
 #include "raster/RenderOptions.h"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -49,6 +50,13 @@ std::string_view ShadeModeName(ShadeMode mode) {
 }
 std::optional<ShadeMode> ParseShadeMode(std::string_view name) {
   return ValueOf(kShadeNames, name);
+}
+
+SampleGrid FrameSampleGrid(const RenderOptions& options) {
+  const SampleGrid forced = options.variant.samples;
+  if (forced.Count() <= 0) return ModeSampleGrid(options.glyphs);
+  // At most 32 samples: a cell's coverage pattern is 32 bits.
+  return {std::clamp(forced.across, 1, 4), std::clamp(forced.down, 1, 8)};
 }
 
 }  // namespace termshade

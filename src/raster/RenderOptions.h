@@ -6,6 +6,7 @@
 
 #include "geometry/Vec3.h"
 #include "raster/TriangleRasterizer.h"
+#include "shade/GlyphMode.h"
 #include "shade/Lighting.h"
 #include "shade/ShadeRamp.h"
 
@@ -20,13 +21,19 @@ std::optional<Method> ParseMethod(std::string_view name);
 std::string_view ShadeModeName(ShadeMode mode);
 std::optional<ShadeMode> ParseShadeMode(std::string_view name);
 
+struct RenderOptions;
+/// The sample grid a frame is drawn with: the variant's, else the glyph mode's.
+SampleGrid FrameSampleGrid(const RenderOptions& options);
+
 /// Variants of the pipeline kept to measure the product against
 /// (termshade bench); the defaults are the product.
 struct RenderVariant {
   DepthFormat depthFormat = DepthFormat::kFloatInverseZ;
   bool scanline = false;       ///< the classic scanline rasterizer instead of edge functions
   bool floatGeometry = false;  ///< transform and project in float instead of double
-  int samplesPerAxis = 1;      ///< k: k x k samples per cell, glyph from the mean intensity
+  /// Samples per cell, k across by m down; 0 x 0: the glyph mode's own grid.
+  /// More samples than the mode's grid suit ramp only (glyph from the mean intensity).
+  SampleGrid samples{0, 0};
 };
 
 /// Everything about how a frame is drawn that is not the camera.
@@ -38,6 +45,11 @@ struct RenderOptions {
   Vec3 sunEye = DefaultSunEye();
   double ambient = kDefaultAmbient;
   RenderVariant variant;
+  GlyphMode glyphs = GlyphMode::kRamp;  ///< SPEC 11
+  /// The cells' fg and bg colours are shown (ansi dump, colour terminal): the
+  /// two-colour modes split each cell's samples by shade; otherwise their glyph
+  /// is the coverage pattern and the fg the covered samples' mean shade.
+  bool twoColour = false;
   /// False: the depth buffer need not hold the frame's depth afterwards (only
   /// the json dump reads it), so methods that need no depth test skip it.
   bool keepDepth = true;

@@ -32,11 +32,20 @@ Method ResolvedMethod(const Scene& scene, Method method) {
   return scene.convexClosedSolid ? Method::kCull : Method::kZBuffer;
 }
 
+Camera SampleCamera(const Camera& camera, SampleGrid grid) {
+  Camera fine = camera;
+  fine.projection.d *= grid.across;
+  fine.projection.cx *= grid.across;
+  fine.projection.cy *= grid.down;
+  fine.projection.cellAspect *= static_cast<double>(grid.across) / grid.down;
+  return fine;
+}
+
 RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const RenderOptions& options,
                              DepthBuffer& depth, CellBuffer& cells) {
-  if (options.variant.samplesPerAxis > 1 && options.method != Method::kWire) {
-    return RenderSupersampled(scene, camera, options, depth, cells);
-  }
+  const SampleGrid grid = FrameSampleGrid(options);
+  lastGrid_ = options.method == Method::kWire ? SampleGrid{} : grid;
+  if (lastGrid_.Count() > 1) return RenderSampled(scene, camera, options, depth, cells);
   RenderOptions resolved = options;
   resolved.method = ResolvedMethod(scene, options.method);
   cells.Clear();
@@ -54,61 +63,24 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   return stats;
 }
 
-// k x k samples per cell: the frame at k times the resolution (the camera
-// scaled by k), then each cell's glyph from its samples' mean intensity
-// (background counts as 0) and its face from the most samples.
-RenderStats Renderer::RenderSupersampled(const Scene& scene, const Camera& camera,
-                                         const RenderOptions& options, DepthBuffer& depth,
-                                         CellBuffer& cells) {
-  const int k = options.variant.samplesPerAxis;
-  Camera fine = camera;
-  fine.projection.d *= k;
-  fine.projection.cx *= k;
-  fine.projection.cy *= k;
-  fineCells_.Resize(cells.WidthCells() * k, cells.HeightCells() * k);
-  fineDepth_.Resize(cells.WidthCells() * k, cells.HeightCells() * k);
+// k x m samples per cell (SPEC 11): the frame drawn at k times the columns
+// and m times the rows (the camera scaled to match, so each sample sits at
+// the center of its part of the cell), each sample resolved and shaded as a
+// one-sample frame's cell is; then the glyph stage turns samples into cells.
+RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
+                                    const RenderOptions& options, DepthBuffer& depth,
+                                    CellBuffer& cells) {
+  const int k = lastGrid_.across, m = lastGrid_.down;
+  const Camera fine = SampleCamera(camera, lastGrid_);
+  fineCells_.Resize(cells.WidthCells() * k, cells.HeightCells() * m);
+  fineDepth_.Resize(cells.WidthCells() * k, cells.HeightCells() * m);
   RenderOptions single = options;
-  single.variant.samplesPerAxis = 1;
+  single.variant.samples = {1, 1};
+  single.glyphs = GlyphMode::kRamp;
+  const SampleGrid grid = lastGrid_;
   const RenderStats stats = Render(scene, fine, single, fineDepth_, fineCells_);
-  cells.Clear();
-  depth.Clear();
-  const double levelCount = options.ramp.LevelCount();
-  for (int row = 0; row < cells.HeightCells(); ++row) {
-    for (int col = 0; col < cells.WidthCells(); ++col) {
-      double intensitySum = 0.0;
-      int covered = 0;
-      uint32_t bestFace = 0;
-      int bestCount = 0;
-      float nearest = 0.0F;
-      for (int j = 0; j < k; ++j) {
-        for (int i = 0; i < k; ++i) {
-          const size_t index = fineCells_.Index(col * k + i, row * k + j);
-          const uint32_t face = fineCells_.FaceNumbers()[index];
-          if (face == 0) continue;
-          ++covered;
-          intensitySum += (fineCells_.Levels()[index] + 0.5) / levelCount;
-          nearest = std::max(nearest, fineDepth_.At(index));
-          int count = 0;  // samples of this face in the cell (k <= 4: cheap)
-          for (int jj = 0; jj < k; ++jj) {
-            for (int ii = 0; ii < k; ++ii) {
-              count += fineCells_.FaceNumber(col * k + ii, row * k + jj) == face ? 1 : 0;
-            }
-          }
-          if (count > bestCount || (count == bestCount && face < bestFace)) {
-            bestFace = face;
-            bestCount = count;
-          }
-        }
-      }
-      if (covered == 0) continue;
-      const size_t index = cells.Index(col, row);
-      const int level = options.ramp.LevelFor(intensitySum / (k * k));
-      cells.FaceNumbers()[index] = bestFace;
-      cells.Levels()[index] = static_cast<int16_t>(level);
-      cells.Glyphs()[index] = options.ramp.Glyph(level);
-      depth.At(index) = nearest;
-    }
-  }
+  lastGrid_ = grid;
+  glyphStage_.Compose(fineCells_, fineDepth_, grid, options, cells, depth);
   return stats;
 }
 
@@ -253,6 +225,7 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
   // Step 1: the faces seen, found from the cells (no pass over all faces).
   auto& faces = cells.FaceNumbers();
   faceLevels_.resize(scene.FaceCount(), -1);
+  faceIntensities_.resize(scene.FaceCount(), 0);
   seenFaces_.clear();
   for (uint32_t faceNumber : faces) {
     if (faceNumber != 0 && faceLevels_[faceNumber - 1] == -1) {
@@ -282,14 +255,23 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
             ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, options.ambient)
             : LambertIntensity(seenSunDots_[i], options.ambient);
     faceLevels_[seenFaces_[i]] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
+    const double clamped = std::isnan(intensity) ? 0.0 : std::clamp(intensity, 0.0, 1.0);
+    faceIntensities_[seenFaces_[i]] = static_cast<uint8_t>(std::lround(255.0 * clamped));
   }
   if (options.method != Method::kWire) {
     auto& glyphs = cells.Glyphs();
     auto& levels = cells.Levels();
+    auto& intensities = cells.Intensities();
     for (size_t i = 0; i < faces.size(); ++i) {
       if (faces[i] == 0) continue;
       levels[i] = faceLevels_[faces[i] - 1];
+      intensities[i] = faceIntensities_[faces[i] - 1];
       glyphs[i] = options.ramp.Glyph(levels[i]);
+    }
+  } else {
+    auto& intensities = cells.Intensities();  // lines are drawn at full intensity
+    for (size_t i = 0; i < intensities.size(); ++i) {
+      if (cells.Levels()[i] >= 0) intensities[i] = 255;
     }
   }
   for (uint32_t f : seenFaces_) faceLevels_[f] = -1;

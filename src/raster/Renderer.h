@@ -9,6 +9,7 @@
 #include "geometry/Scene.h"
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
+#include "raster/GlyphStage.h"
 #include "raster/RenderOptions.h"
 #include "raster/TriangleRasterizer.h"
 
@@ -23,6 +24,10 @@ struct RenderStats {
 /// The method actually drawn: auto becomes cull or zbuffer for the scene.
 Method ResolvedMethod(const Scene& scene, Method method);
 
+/// The camera whose one-sample cells are the samples of `camera`'s cells on a
+/// k x m grid: u' = k u, v' = m v (d and cx scale by k, cy by m, the aspect by k / m).
+Camera SampleCamera(const Camera& camera, SampleGrid grid);
+
 /// The one geometry pipeline, world -> eye -> cells, for every front end.
 /// Keeps per-frame scratch arrays between frames, so a steady frame loop
 /// does not allocate.
@@ -32,10 +37,14 @@ class Renderer {
   RenderStats Render(const Scene& scene, const Camera& camera, const RenderOptions& options,
                      DepthBuffer& depth, CellBuffer& cells);
 
+  /// The last frame's samples when it had several a cell (grid.across x
+  /// grid.down per cell, faces and intensities); otherwise the frame itself is the samples.
+  const CellBuffer& Samples() const { return fineCells_; }
+  SampleGrid LastSampleGrid() const { return lastGrid_; }
+
  private:
-  RenderStats RenderSupersampled(const Scene& scene, const Camera& camera,
-                                 const RenderOptions& options, DepthBuffer& depth,
-                                 CellBuffer& cells);
+  RenderStats RenderSampled(const Scene& scene, const Camera& camera, const RenderOptions& options,
+                            DepthBuffer& depth, CellBuffer& cells);
   void TransformVertices(const Scene& scene, const Camera& camera, const RenderVariant& variant,
                          bool needEyeZ);
   bool FaceIsFront(const Scene& scene, uint32_t face) const;
@@ -55,14 +64,17 @@ class Renderer {
   DepthEncoding depthEncoding_;
   bool scanline_ = false;
   float maxW_ = 0.0F;
-  CellBuffer fineCells_;  ///< supersampled variants: the frame at k x k samples a cell
+  CellBuffer fineCells_;  ///< several samples a cell: the frame at k x m samples a cell
   DepthBuffer fineDepth_;
+  GlyphStage glyphStage_;
+  SampleGrid lastGrid_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
   std::vector<uint8_t> outCodes_;
-  std::vector<int16_t> faceLevels_;  ///< per face: ramp level; -1 between frames
-  std::vector<uint32_t> seenFaces_;  ///< faces seen in some cell this frame
-  std::vector<double> seenSunDots_;  ///< their n.s, n turned towards the eye
+  std::vector<int16_t> faceLevels_;       ///< per face: ramp level; -1 between frames
+  std::vector<uint8_t> faceIntensities_;  ///< per face: intensity 0..255 this frame
+  std::vector<uint32_t> seenFaces_;       ///< faces seen in some cell this frame
+  std::vector<double> seenSunDots_;       ///< their n.s, n turned towards the eye
   std::vector<std::pair<double, uint32_t>> painterOrder_;
 };
 

@@ -11,6 +11,7 @@ struct StatusFields {
   bool leadIsModel = true;  ///< a model label keeps its tail (file name, [i/n])
   std::string view;         ///< "theta .. phi .. rho .."
   std::string method;       ///< "zbuffer contrast"
+  std::string glyphs;       ///< the glyph mode, "sextants"; empty: not shown
   std::string upAxis;       ///< "+z"; empty: not shown
   size_t vertices = 0;
   size_t faces = 0;
@@ -19,10 +20,11 @@ struct StatusFields {
   double frameMs = 0.0;
 };
 
-/// The status line in widthCells. Left: the lead, method, up axis, faces,
-/// triangles, vertices; right: the view, ms per frame and "? help". When
-/// space is short the least useful go first: vertices, ms, triangles, faces,
-/// up axis, method, view; the model's file name and "? help" stay.
+/// The status line in widthCells. Left: the lead, glyph mode, method, up
+/// axis, faces, triangles, vertices; right: the view, ms per frame and
+/// "? help". When space is short the least useful go first: vertices, ms,
+/// triangles, faces, up axis, method, view, glyph mode; the model's file
+/// name and "? help" stay.
 std::string ComposeViewerStatus(const StatusFields& fields, int widthCells);
 
 /// A count in at most 6 characters: 950, 12345, 123.4k, 2.1M.

@@ -413,6 +413,7 @@ class EventLoop {
           state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends" : state_.ModelLabel();
       fields.leadIsModel = !state_.LightMode();
     }
+    fields.glyphs = std::string(GlyphModeName(render.glyphs));
     return ComposeViewerStatus(fields, cols);
   }
 
@@ -467,6 +468,15 @@ int RunViewer(const ViewerOptions& options) {
                 << "\n";
       return 2;
     }
+    // The glyph mode: as asked, else what this terminal shows best.
+    const bool utf8 = codeset == "UTF-8";
+    const char* term = std::getenv("TERM");
+    const char* termProgram = std::getenv("TERM_PROGRAM");
+    state.SetGlyphs(
+        options.glyphs.value_or(PickGlyphMode(utf8, effective.colour != ColourMode::kNone,
+                                              term != nullptr ? term : "",
+                                              termProgram != nullptr ? termProgram : "")),
+        utf8);
     // The first model loads on the worker too: the screen says so at once.
     state.RequestFirst();
     EventLoop loop(state, session);

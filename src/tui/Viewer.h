@@ -16,6 +16,7 @@ struct ViewerOptions {
   /// kAuto is resolved from the terminal before the viewer starts.
   ColourMode colour = ColourMode::kAuto;
   RenderOptions render;
+  std::optional<GlyphMode> glyphs;  ///< unset: PickGlyphMode for the terminal
 };
 
 /// Runs the full-screen viewer until the user quits; returns the exit code.

@@ -28,6 +28,8 @@ ViewerAction ActionForChar(int ascii) {
       return ViewerAction::kCycleShade;
     case 'c':
       return ViewerAction::kToggleColour;
+    case 'g':
+      return ViewerAction::kCycleGlyphs;
     case 'L':
       return ViewerAction::kToggleLightMode;
     case ' ':

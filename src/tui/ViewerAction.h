@@ -15,6 +15,7 @@ enum class ViewerAction {
   kRefit,
   kCycleMethod,
   kCycleShade,
+  kCycleGlyphs,
   kToggleColour,
   kToggleLightMode,
   kToggleTurntable,

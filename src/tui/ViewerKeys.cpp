@@ -18,6 +18,7 @@ constexpr std::array kKeys{
     ViewerKey{"s", "shading: contrast / lambert", "s"},
     ViewerKey{"b", "back faces: culled / drawn", "b"},
     ViewerKey{"c", "colour on / off", "c"},
+    ViewerKey{"g", "glyphs: ramp ascii blocks quadrants sextants braille", "g"},
     ViewerKey{"L", "light mode: arrows move the sun", "L"},
     ViewerKey{"space", "turntable on / off", " "},
     ViewerKey{"a A", "cell aspect - / +", "aA"},

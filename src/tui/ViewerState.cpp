@@ -179,6 +179,11 @@ void ViewerState::Apply(ViewerAction action) {
       render_.shade =
           render_.shade == ShadeMode::kContrast ? ShadeMode::kLambert : ShadeMode::kContrast;
       break;
+    case ViewerAction::kCycleGlyphs:  // modes beyond ASCII only where the locale shows them
+      do {
+        render_.glyphs = NextGlyphMode(render_.glyphs);
+      } while (!utf8_ && NeedsUtf8(render_.glyphs));
+      break;
     case ViewerAction::kToggleColour:
       colourOn_ = !colourOn_;
       break;

@@ -72,6 +72,11 @@ class ViewerState {
   size_t ModelCount() const { return paths_.size(); }
   /// The colour mode cells are drawn in now (kNone after `c` turned it off).
   ColourMode Colour() const { return colourOn_ ? colourMode_ : ColourMode::kNone; }
+  /// The glyph mode, and whether the terminal's locale can show the modes beyond ASCII.
+  void SetGlyphs(GlyphMode mode, bool utf8) {
+    render_.glyphs = mode;
+    utf8_ = utf8;
+  }
   bool LightMode() const { return lightMode_; }
   bool Turntable() const { return turntable_; }
   bool HelpShown() const { return help_; }
@@ -103,6 +108,7 @@ class ViewerState {
   RenderOptions render_;
   ColourMode colourMode_ = ColourMode::k256;  ///< what `c` turns on
   bool colourOn_ = true;
+  bool utf8_ = true;
   bool lightMode_ = false;
   bool turntable_ = false;
   bool help_ = false;

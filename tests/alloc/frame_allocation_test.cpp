@@ -46,10 +46,12 @@ TEST(FrameLoop, AllocatesNothingAfterTheFirstFrames) {
   const Scene scene = PrepareScene(*GenerateScene("sphere_cone"));
   for (Method method :
        {Method::kZBuffer, Method::kPainter, Method::kCull, Method::kWire, Method::kAuto}) {
-    for (int samples : {1, 2}) {
+    for (GlyphMode glyphs : {GlyphMode::kRamp, GlyphMode::kAscii, GlyphMode::kQuadrants,
+                             GlyphMode::kSextants, GlyphMode::kBraille}) {
       RenderOptions options;
       options.method = method;
-      options.variant.samplesPerAxis = samples;
+      options.glyphs = glyphs;
+      options.twoColour = glyphs == GlyphMode::kQuadrants;
       Renderer renderer;
       CellBuffer cells(160, 48);
       DepthBuffer depth;
@@ -64,7 +66,7 @@ TEST(FrameLoop, AllocatesNothingAfterTheFirstFrames) {
       const long before = gAllocations.load();
       for (int i = 0; i < 50; ++i) frame();
       EXPECT_EQ(gAllocations.load() - before, 0)
-          << MethodName(method) << " with " << samples << "x" << samples << " samples";
+          << MethodName(method) << " with glyphs " << GlyphModeName(glyphs);
     }
   }
 }

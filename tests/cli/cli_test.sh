@@ -41,7 +41,7 @@ expect help_lists_render grep -q "render" "$work/out"
 check version 0 "" -- "$bin" --version
 expect version_names_the_program grep -qE '^termshade [0-9]+\.[0-9]+\.[0-9]+$' "$work/out"
 check render_help 0 "" -- "$bin" render --help
-for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --format --frames --step --output --no-cull --color --mono; do
+for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --glyphs --format --frames --step --output --no-cull --color --mono; do
   expect "render_help_documents_$option" grep -q -- "$option" "$work/out"
 done
 check turntable 0 "" -- "$bin" render "$src/data/cube.dat" --frames 3 --step 0.5 --size 20x10
@@ -70,6 +70,19 @@ expect ansi_auto_truecolor_24bit grep -q $'\x1b\\[38;2;' "$work/out"
 check ansi_auto_256 0 "" -- env -u NO_COLOR -u COLORTERM TERM=xterm-256color "$bin" render "$src/data/cube.dat" --format ansi --size 30x10 --color auto
 expect ansi_auto_256_indexed grep -q $'\x1b\\[38;5;' "$work/out"
 check bad_color 2 "--color" -- "$bin" render "$src/data/cube.dat" --color 16
+# Glyph modes (SPEC 11): each one renders; ramp is render's default; a bad name is usage.
+for mode in ascii blocks quadrants sextants braille; do
+  check "glyphs_$mode" 0 "" -- "$bin" render "$src/data/cube.dat" --glyphs "$mode" --size 30x10
+  expect "glyphs_${mode}_is_10_lines" test "$(wc -l <"$work/out")" -eq 10
+done
+"$bin" render "$src/data/cube.dat" --glyphs ramp --size 30x10 >"$work/ramp"
+"$bin" render "$src/data/cube.dat" --size 30x10 >"$work/plain"
+expect glyphs_ramp_is_the_default cmp -s "$work/ramp" "$work/plain"
+check glyphs_bad 2 "--glyphs" -- "$bin" render "$src/data/cube.dat" --glyphs sixel
+check glyphs_json 0 "" -- "$bin" render "$src/data/cube.dat" --glyphs sextants --format json --size 20x8
+expect glyphs_json_has_samples grep -q '"samples": \[2, 3\]' "$work/out"
+check glyphs_blocks_ansi 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --glyphs blocks --format ansi --color truecolor --size 50x16
+expect glyphs_blocks_ansi_has_background grep -q $'\x1b\\[48;2;' "$work/out"
 check auto_method 0 "" -- "$bin" render "$src/data/cube.dat" --method auto --format json --size 20x8
 expect auto_reports_itself grep -q '"method": "auto"' "$work/out"
 check generate 0 "" -- "$bin" generate wedge

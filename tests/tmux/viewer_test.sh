@@ -29,10 +29,20 @@ screen() { tm capture-pane -t v -p; }
 # The screen with wrapped lines joined: a long path in a message may wrap.
 joined_screen() { tm capture-pane -t v -p -J; }
 
+# The glyph mode the viewer names on its status line (a long message may hide
+# it: then the last one seen).
+glyph_mode_shown() { screen | tail -n 1 | grep -oE ' (ramp|ascii|blocks|quadrants|sextants|braille) ' | head -n 1 | tr -d ' '; }
+last_glyphs=""
+note_glyphs() {
+  local shown
+  shown=$(glyph_mode_shown)
+  if [ -n "$shown" ]; then last_glyphs=$shown; fi
+}
+
 wait_for() {  # wait_for REGEX SECONDS: until the screen matches
   local deadline=$((SECONDS + $2))
   while [ $SECONDS -le "$deadline" ]; do
-    if joined_screen | grep -qE -- "$1"; then return 0; fi
+    if joined_screen | grep -qE -- "$1"; then note_glyphs; return 0; fi
     sleep 0.1
   done
   screen
@@ -56,7 +66,9 @@ frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line =
   shift 2
   settle
   screen | head -n "$rows" | sed 's/[[:space:]]*$//' >"$work/screen.txt"
-  "$bin" render "$@" | sed 's/[[:space:]]*$//' >"$work/render.txt"
+  # The viewer picks its glyph mode for the terminal and names it on the status line.
+  note_glyphs
+  "$bin" render "$@" --glyphs "${last_glyphs:-none-seen}" | sed 's/[[:space:]]*$//' >"$work/render.txt"
   if cmp -s "$work/screen.txt" "$work/render.txt"; then pass; else
     fail "$name: screen differs from 'termshade render $*'"
     diff "$work/screen.txt" "$work/render.txt" | head -20
@@ -373,6 +385,12 @@ wait_for '^\$ ?$' 5 >/dev/null
 run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8"
 frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24
+# g cycles the glyph modes; each frame is render's in that mode.
+for mode in sextants braille ramp ascii blocks; do
+  tm send-keys -t v g
+  wait_for " $mode " 5 >/dev/null || fail "g did not reach $mode"
+  frame_matches_render "glyphs_$mode" 24 "$src/data/sphere_cone.dat" --size 80x24
+done
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 

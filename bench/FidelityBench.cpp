@@ -1,0 +1,201 @@
+#include "FidelityBench.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <numbers>
+#include <vector>
+
+#include "MethodsBench.h"
+#include "SpeedErrorPlot.h"
+#include "Statistics.h"
+#include "geometry/FitCamera.h"
+#include "io/ModelLoader.h"
+#include "io/SceneGenerators.h"
+#include "raster/FrameFidelity.h"
+#include "raster/Renderer.h"
+
+namespace termshade {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct NamedScene {
+  std::string name;
+  Scene scene;
+};
+
+// A (2, 3) torus knot tube: curved, self-occluding, thin in places, 19,200 triangles.
+Mesh TorusKnot() {
+  constexpr int kAlong = 320, kAround = 30;
+  constexpr double kTube = 0.28;
+  Mesh mesh;
+  auto curve = [](double t) {
+    const double r = 2.0 + std::cos(3 * t);
+    return Vec3{r * std::cos(2 * t), r * std::sin(2 * t), std::sin(3 * t)};
+  };
+  for (int i = 0; i < kAlong; ++i) {
+    const double t = 2 * std::numbers::pi * i / kAlong, dt = 1e-4;
+    const Vec3 p = curve(t), tangent = Normalized(curve(t + dt) - curve(t - dt));
+    const Vec3 side = Normalized(Cross(tangent, Vec3{0, 0, 1}));
+    const Vec3 up = Cross(side, tangent);
+    for (int j = 0; j < kAround; ++j) {
+      const double a = 2 * std::numbers::pi * j / kAround;
+      mesh.verticesFile.push_back(p + (side * std::cos(a) + up * std::sin(a)) * kTube);
+    }
+  }
+  for (int i = 0; i < kAlong; ++i) {
+    for (int j = 0; j < kAround; ++j) {
+      const auto at = [&](int ii, int jj) {
+        return static_cast<uint32_t>((ii % kAlong) * kAround + jj % kAround);
+      };
+      mesh.AddFace(std::array<uint32_t, 4>{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return mesh;
+}
+
+std::vector<NamedScene> Scenes(const std::string& dataDirectory) {
+  std::vector<NamedScene> scenes;
+  for (const std::string& name : GeneratedSceneNames()) {
+    Loaded<Mesh> mesh = LoadModelFile(dataDirectory + "/" + name + ".dat");
+    if (!mesh.Ok()) {
+      std::cerr << mesh.Error().ToString() << "\n";
+      continue;
+    }
+    scenes.push_back({name, PrepareScene(std::move(mesh.Value()))});
+  }
+  scenes.push_back({"torus knot 19k", PrepareScene(TorusKnot())});
+  return scenes;
+}
+
+struct ModeCase {
+  GlyphMode mode;
+  bool colour;
+  std::string Name() const {
+    return std::string(GlyphModeName(mode)) + (colour ? " colour" : " mono");
+  }
+};
+
+std::vector<ModeCase> Cases() {
+  std::vector<ModeCase> cases;
+  for (int m = 0; m < kGlyphModeCount; ++m) {
+    for (bool colour : {false, true}) cases.push_back({static_cast<GlyphMode>(m), colour});
+  }
+  return cases;
+}
+
+RenderOptions OptionsFor(const ModeCase& c) {
+  RenderOptions options;
+  options.shade = ShadeMode::kLambert;  // the reference's shading
+  options.keepDepth = false;            // as the viewer draws
+  options.glyphs = c.mode;
+  options.twoColour = c.colour;
+  return options;
+}
+
+double MedianFrameMs(const NamedScene& named, const RenderOptions& options,
+                     const std::vector<Camera>& cameras, const FidelityBenchOptions& bench) {
+  Renderer renderer;
+  CellBuffer cells(bench.widthCells, bench.heightCells);
+  DepthBuffer depth;
+  depth.Resize(bench.widthCells, bench.heightCells);
+  for (const Camera& camera : cameras) renderer.Render(named.scene, camera, options, depth, cells);
+  std::vector<double> ms;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(bench.secondsPerCase);
+  while (ms.size() < 10 || (Clock::now() < deadline && ms.size() < 20000)) {
+    for (const Camera& camera : cameras) {
+      const auto start = Clock::now();
+      renderer.Render(named.scene, camera, options, depth, cells);
+      ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+  }
+  return Median(std::move(ms));
+}
+
+InkImage Scaled(const InkImage& image, double factor) {
+  InkImage out = image;
+  for (float& p : out.pixels) p = static_cast<float>(p * factor);
+  return out;
+}
+
+struct CaseResult {
+  double ms = 0.0, ssim = 0.0, mse = 0.0, ssimUnifont = 0.0, flicker = 0.0;
+};
+
+}  // namespace
+
+int RunFidelityBench(const FidelityBenchOptions& options) {
+  const std::vector<NamedScene> scenes = Scenes(options.dataDirectory);
+  if (scenes.size() < 3) {
+    std::cerr << "termshade bench: run it from the source tree (or pass --data DIR)\n";
+    return 1;
+  }
+  const int cols = options.widthCells, rows = options.heightCells;
+  std::ofstream csv(options.csvPath);
+  csv << "scene,mode,median_ms,time_vs_ramp,ssim,mse,ssim_unifont,flicker\n";
+  std::printf(
+      "termshade bench fidelity: %dx%d cells, %d views per scene, blurred SSIM and MSE "
+      "against the exact 8x16-per-cell image, %s\n",
+      cols, rows, options.frames, MachineDescription().c_str());
+  std::printf("%-15s %-17s %9s %7s %7s %9s %8s %9s\n", "scene", "mode", "median ms", "x ramp",
+              "SSIM", "MSE", "SSIM uf", "flicker %");
+  std::vector<FidelityPoint> points;
+  for (const NamedScene& named : scenes) {
+    // Step 1: the views and their exact images (at ink range 1; scaled per mode).
+    std::vector<Camera> cameras, nudged;
+    std::vector<InkImage> exact;
+    const double rho = DefaultView(named.scene.diagonalModelUnits).rho;
+    for (int f = 0; f < options.frames; ++f) {
+      ViewParams view{rho, 0.3 + f * 2.0 * std::numbers::pi / options.frames, f % 2 ? 0.9 : 1.3};
+      cameras.push_back(FitCamera(named.scene, view, cols, rows, 2.0));
+      view.theta += 0.01;
+      nudged.push_back(FitCamera(named.scene, view, cols, rows, 2.0));
+      exact.push_back(ExactImage(named.scene, cameras.back(), OptionsFor({}), cols, rows, 1.0));
+    }
+    // Step 2: every mode on those views.
+    double rampMs[2] = {0.0, 0.0};
+    for (const ModeCase& c : Cases()) {
+      const RenderOptions renderOptions = OptionsFor(c);
+      CaseResult result;
+      result.ms = MedianFrameMs(named, renderOptions, cameras, options);
+      if (c.mode == GlyphMode::kRamp) rampMs[c.colour ? 1 : 0] = result.ms;
+      Renderer renderer;
+      CellBuffer cells(cols, rows), moved(cols, rows);
+      DepthBuffer depth;
+      depth.Resize(cols, rows);
+      for (size_t f = 0; f < cameras.size(); ++f) {
+        renderer.Render(named.scene, nudged[f], renderOptions, depth, moved);
+        renderer.Render(named.scene, cameras[f], renderOptions, depth, cells);
+        result.flicker += ChangedShare(cells, moved, c.colour) / cameras.size();
+        for (const GlyphInkTable* table : {&DefaultInkTable(), &UnifontInkTable()}) {
+          const double range = InkRange(renderOptions, c.colour, *table);
+          const Fidelity fidelity =
+              CompareImages(Scaled(exact[f], range), GlyphImage(cells, *table, c.colour), range);
+          if (table == &DefaultInkTable()) {
+            result.ssim += fidelity.ssim / cameras.size();
+            result.mse += fidelity.mse / cameras.size();
+          } else {
+            result.ssimUnifont += fidelity.ssim / cameras.size();
+          }
+        }
+      }
+      const double vsRamp = result.ms / rampMs[c.colour ? 1 : 0];
+      std::printf("%-15s %-17s %9.4f %7.2f %7.4f %9.6f %8.4f %9.2f\n", named.name.c_str(),
+                  c.Name().c_str(), result.ms, vsRamp, result.ssim, result.mse, result.ssimUnifont,
+                  100 * result.flicker);
+      csv << '"' << named.name << "\",\"" << c.Name() << "\"," << result.ms << ',' << vsRamp << ','
+          << result.ssim << ',' << result.mse << ',' << result.ssimUnifont << ',' << result.flicker
+          << "\n";
+      points.push_back({named.name, c.Name(), result.ms, result.ssim});
+    }
+    std::fflush(stdout);
+  }
+  WriteSpeedFidelityPlot(points, MachineDescription(), options.svgPath);
+  std::printf("wrote %s and %s\n", options.csvPath.c_str(), options.svgPath.c_str());
+  return csv ? 0 : 1;
+}
+
+}  // namespace termshade

@@ -1,0 +1,136 @@
+#include "shade/AsciiMatcher.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shade/GlyphInk.h"
+
+namespace termshade {
+namespace {
+
+constexpr size_t kCacheSize = size_t{1} << 14;
+constexpr int kProbes = 8;
+// Contrast enhancement (Harri): levels below the cell's brightest are pushed
+// down by (level / max)^exponent, sharpening edges inside the cell.
+constexpr double kContrastExponent = 1.5;
+
+uint64_t Mix(uint64_t key) {  // splitmix64's finalizer
+  key ^= key >> 30;
+  key *= 0xBF58476D1CE4E5B9ULL;
+  key ^= key >> 27;
+  key *= 0x94D049BB133111EBULL;
+  return key ^ (key >> 31);
+}
+
+}  // namespace
+
+void AsciiMatcher::Prepare(SampleGrid grid) {
+  if (grid == grid_) return;
+  grid_ = grid;
+  count_ = grid.Count();
+  glyphs_.clear();
+  vectors_.clear();
+  // Step 1: each printable glyph's mean ink over each sample's region of the 8 x 16 map.
+  const GlyphInkTable& table = DefaultInkTable();
+  for (char32_t c = U'!'; c <= U'~'; ++c) {
+    const InkMap* ink = table.Find(c);
+    if (ink == nullptr) continue;
+    glyphs_.push_back(c);
+    for (int n = 0; n < count_; ++n) {
+      const int i = n % grid.across, j = n / grid.across;
+      const int x0 = i * kInkColumns / grid.across, x1 = (i + 1) * kInkColumns / grid.across;
+      const int y0 = j * kInkRows / grid.down, y1 = (j + 1) * kInkRows / grid.down;
+      int sum = 0;
+      for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) sum += (*ink)[static_cast<size_t>(y * kInkColumns + x)];
+      }
+      const int area = std::max(1, (x1 - x0) * (y1 - y0));
+      const int mean = (sum + area / 2) / area;
+      vectors_.push_back(mean);
+    }
+  }
+  // The brightest glyph's mean ink: what full intensity maps to (SPEC 12's ink range).
+  inkScale_ = 0;
+  for (size_t g = 0; g < glyphs_.size(); ++g) {
+    int sum = 0;
+    for (int n = 0; n < count_; ++n) sum += vectors_[g * static_cast<size_t>(count_) + n];
+    inkScale_ = std::max(inkScale_, sum / count_);
+  }
+  // Step 2: the contrast curve, and an empty cache.
+  for (int max = 0; max < kLevels; ++max) {
+    for (int level = 0; level < kLevels; ++level) {
+      const double ratio = max > 0 ? std::min(1.0, double(level) / max) : 0.0;
+      enhanced_[level][max] = static_cast<int>(
+          std::lround(255.0 * max / (kLevels - 1) * std::pow(ratio, kContrastExponent)));
+    }
+  }
+  cache_.assign(kCacheSize, Entry{});
+}
+
+char32_t AsciiMatcher::MatchInk(const uint8_t* values, uint32_t covered) {
+  std::array<uint8_t, 32> levels{};
+  for (int n = 0; n < count_; ++n) {
+    if ((covered >> n) & 1U) levels[n] = static_cast<uint8_t>((values[n] * 15 + 127) / 255);
+  }
+  return Match(levels);
+}
+
+char32_t AsciiMatcher::MatchShape(const uint8_t* values, uint32_t covered) {
+  int brightest = 1;
+  for (int n = 0; n < count_; ++n) {
+    if ((covered >> n) & 1U) brightest = std::max<int>(brightest, values[n]);
+  }
+  std::array<uint8_t, 32> levels{};
+  for (int n = 0; n < count_; ++n) {
+    // Covered samples are at least level 1, so a black face still shows.
+    if ((covered >> n) & 1U) {
+      levels[n] = static_cast<uint8_t>(std::max(1, (values[n] * 15 + brightest / 2) / brightest));
+    }
+  }
+  return Match(levels);
+}
+
+char32_t AsciiMatcher::Match(const std::array<uint8_t, 32>& levels) {
+  if (count_ > 16) return Nearest(levels);  // too many samples for a 64-bit key
+  uint64_t key = 0;
+  for (int n = 0; n < count_; ++n) key = (key << 4) | levels[n];
+  const size_t home = Mix(key) & (kCacheSize - 1);
+  for (int probe = 0; probe < kProbes; ++probe) {
+    Entry& entry = cache_[(home + probe) & (kCacheSize - 1)];
+    if (entry.glyph != 0 && entry.key == key) return entry.glyph;
+    if (entry.glyph == 0) {
+      entry = {key, Nearest(levels)};
+      return entry.glyph;
+    }
+  }
+  Entry& entry = cache_[home];  // full: replace the home slot
+  entry = {key, Nearest(levels)};
+  return entry.glyph;
+}
+
+char32_t AsciiMatcher::Nearest(const std::array<uint8_t, 32>& levels) const {
+  // The target ink per region: enhanced brightness scaled to the most ink any glyph has there.
+  int maxLevel = 0;
+  for (int n = 0; n < count_; ++n) maxLevel = std::max<int>(maxLevel, levels[n]);
+  std::array<int, 32> target{};
+  for (int n = 0; n < count_; ++n) {
+    target[n] = enhanced_[levels[n]][maxLevel] * inkScale_ / 255;
+  }
+  int64_t bestError = INT64_MAX;
+  char32_t best = U'.';
+  for (size_t g = 0; g < glyphs_.size(); ++g) {
+    const int* vector = &vectors_[g * static_cast<size_t>(count_)];
+    int64_t error = 0;
+    for (int n = 0; n < count_; ++n) {
+      const int difference = vector[n] - target[n];
+      error += difference * difference;
+    }
+    if (error < bestError) {  // strict: the lower code point keeps a tie
+      bestError = error;
+      best = glyphs_[g];
+    }
+  }
+  return best;
+}
+
+}  // namespace termshade

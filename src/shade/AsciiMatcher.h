@@ -1,0 +1,49 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "shade/GlyphMode.h"
+
+namespace termshade {
+
+/// Shape-matched ASCII (SPEC 11; Harri's "shape vectors"): each printable
+/// ASCII glyph becomes a vector of its measured ink (DefaultInkTable) over
+/// the regions a cell's samples sit in; a cell takes the glyph nearest its
+/// samples (brightness scaled to the most mean ink any glyph has). Integer
+/// arithmetic; ties go to the lower code point. Results are
+/// memoized per quantized sample vector (4 bits a sample), so a frame costs
+/// one table probe per cell for the values seen before; the cache does not
+/// change any result.
+class AsciiMatcher {
+ public:
+  /// Builds the glyph vectors for a sample grid (no work if it is the current one).
+  void Prepare(SampleGrid grid);
+
+  /// For a screen without colour: the glyph whose ink best shows the samples'
+  /// brightness (values 0..255, background 0; sample n is bit n of `covered`).
+  char32_t MatchInk(const uint8_t* values, uint32_t covered);
+  /// With colour: the glyph whose shape matches the samples scaled to their
+  /// brightest one (the fg colour carries the brightness).
+  char32_t MatchShape(const uint8_t* values, uint32_t covered);
+
+ private:
+  static constexpr int kLevels = 16;  // quantization of a sample for the cache key
+  struct Entry {
+    uint64_t key = 0;
+    char32_t glyph = 0;  // 0: empty
+  };
+  char32_t Match(const std::array<uint8_t, 32>& levels);
+  char32_t Nearest(const std::array<uint8_t, 32>& levels) const;
+
+  SampleGrid grid_{0, 0};
+  int count_ = 0;
+  std::vector<char32_t> glyphs_;
+  std::vector<int> vectors_;  ///< glyph-major: count_ region inks, 0..255
+  int inkScale_ = 0;          ///< the most mean ink a glyph has, 0..255
+  std::array<std::array<int, kLevels>, kLevels> enhanced_{};  ///< [level][cell's max level]
+  std::vector<Entry> cache_;
+};
+
+}  // namespace termshade
