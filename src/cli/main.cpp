@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <regex>
 
 #include "LoadBench.h"
@@ -13,6 +14,8 @@
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
 #include "cli/RenderCommand.h"
+#include "geometry/Angle.h"
+#include "geometry/UpAxis.h"
 #include "io/LoadBudget.h"
 #include "io/LoadError.h"
 #include "io/ModelLoader.h"
@@ -79,16 +82,49 @@ void AddSizeOption(CLI::App& command, RenderCommandOptions& options) {
             options.widthCells = cols;
             options.heightCells = rows;
           },
-          "frame size in cells, COLSxROWS (default 80x24)")
+          "frame size in cells, COLSxROWS (default: the terminal's, one row less, when "
+          "stdout is one; else 80x24)")
       ->type_name("COLSxROWS");
+}
+
+// An angle in radians, or in degrees with a `deg` suffix.
+void AddAngleOption(CLI::App& command, const std::string& name, double& radians,
+                    const std::string& description) {
+  command
+      .add_option_function<std::string>(
+          name,
+          [&radians, name](const std::string& text) {
+            const auto angle = termshade::ParseAngleRadians(text);
+            if (!angle) {
+              throw CLI::ValidationError(name, "expected radians (0.3) or degrees (30deg)");
+            }
+            radians = *angle;
+          },
+          description)
+      ->type_name("ANGLE");
+}
+
+void AddUpOption(CLI::App& command, std::optional<termshade::UpAxis>& upAxis) {
+  command
+      .add_option_function<std::string>(
+          "--up",
+          [&upAxis](const std::string& text) {
+            upAxis = termshade::ParseUpAxis(text);
+            if (!upAxis) throw CLI::ValidationError("--up", "expected x, y, z, -x, -y or -z");
+          },
+          "the file's up axis, turned to the screen's up: x|y|z|-x|-y|-z "
+          "(default: what the file declares, else its format's convention)")
+      ->type_name("AXIS");
 }
 
 void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
   AddSizeOption(command, options);
   command.add_option("--cell-aspect", options.cellAspect, "cell height / cell width (default 2.0)")
       ->check(CLI::Range(0.25, 8.0));
-  command.add_option("--theta", options.theta, "eye azimuth, radians (default 0.3)");
-  command.add_option("--phi", options.phi, "eye polar angle from +z, radians (default 1.3)");
+  AddAngleOption(command, "--theta", options.theta,
+                 "eye azimuth about the up axis, radians or Ndeg (default 0.3)");
+  AddAngleOption(command, "--phi", options.phi,
+                 "eye polar angle from the up axis, radians or Ndeg (default 1.3)");
   command
       .add_option("--rho", options.rho,
                   "eye distance, model units (default 3 x 0.6 x bounding-box diagonal)")
@@ -123,6 +159,9 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   }
   viewer.render.ramp = termshade::ShadeRamp(look.ramp);
   viewer.render.cullBackFaces = !look.noCull;
+  viewer.upAxis = look.upAxis;
+  viewer.theta = look.theta;
+  viewer.phi = look.phi;
   return termshade::RunViewer(viewer);
 }
 
@@ -148,11 +187,16 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(0.25, 8.0));
   app.add_flag("--mono", mono, "no colour (also when NO_COLOR is set)");
   AddLookOptions(app, viewerLook);
+  AddUpOption(app, viewerLook.upAxis);
+  AddAngleOption(app, "--theta", viewerLook.theta, "starting eye azimuth, radians or Ndeg (0.3)");
+  AddAngleOption(app, "--phi", viewerLook.phi, "starting eye polar angle, radians or Ndeg (1.3)");
 
   // Headless frames: termshade render MODEL [options]
   RenderCommandOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "render frames to stdout or a file");
-  renderCommand->add_option("model", render.modelPath, "model file, or - for standard input")
+  renderCommand
+      ->add_option("model", render.modelPaths,
+                   "model file(s), or - for standard input; several are rendered one after another")
       ->required()
       ->type_name("MODEL");
   AddViewOptions(*renderCommand, render);
@@ -163,30 +207,12 @@ int Run(int argc, char** argv) {
       ->type_name("FILE");
   renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
       ->check(CLI::Range(1, 100000));
-  renderCommand->add_option("--step", render.stepRadians,
-                            "turntable: theta step between frames, radians (default 0.1)");
-  renderCommand
-      ->add_option("--input-format", render.inputFormat,
-                   "the model's format as an extension (stl, obj, ...) where the name and "
-                   "content cannot tell it (standard input)")
-      ->type_name("EXT");
-  renderCommand
-      ->add_option_function<std::string>(
-          "--memory-budget",
-          [&render](const std::string& text) {
-            const auto bytes = termshade::ParseByteCount(text);
-            if (!bytes) {
-              throw CLI::ValidationError("--memory-budget",
-                                         "expected a size such as 4G, 512M or 1000000 (bytes)");
-            }
-            render.memoryBudgetBytes = *bytes;
-          },
-          "most memory loading may take, e.g. 4G or 512M (default: TERMSHADE_MEMORY_BUDGET, "
-          "else 2G); a model needing more is refused")
-      ->type_name("SIZE");
+  renderCommand->add_option(
+      "model", render.modelPaths,
+      "model file(s), or - for standard input; several are rendered one after another")
 
-  // Scene files: termshade generate NAME [-o FILE]
-  termshade::GenerateCommandOptions generate;
+      // Scene files: termshade generate NAME [-o FILE]
+      termshade::GenerateCommandOptions generate;
   CLI::App* generateCommand = app.add_subcommand(
       "generate", "write a shipped scene (data/*.dat) from its generator, or a test sphere");
   generateCommand
@@ -194,8 +220,9 @@ int Run(int argc, char** argv) {
                    "scene name, 'all' (with -o DIRECTORY), or 'sphere' (see --triangles)")
       ->required();
   generateCommand
-      ->add_option("-o,--output", generate.outputPath,
-                   "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')")
+      ->add_option(
+          "-o,--output", generate.outputPath,
+          "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')")
       ->type_name("FILE");
   generateCommand
       ->add_option("--triangles", generate.triangles, "sphere: about N triangles (default 200000)")

@@ -285,6 +285,7 @@ class EventLoop {
     std::snprintf(drawnText, sizeof drawnText, "%d/%zu faces %d tris", stats.facesVisible,
                   state_.CurrentScene().FaceCount(), stats.trianglesDrawn);
     std::snprintf(timeText, sizeof timeText, "%.2f ms", frameMs);
+    const std::string upText = "up " + std::string(UpAxisName(state_.CurrentScene().upAxis));
     // A message is shown whole if it can be; the model's path gives way to the view.
     StatusSegment lead{SanitizeForTerminal(state_.Message(), 4096), 0, false, Elision::kMiddle};
     if (lead.text.empty()) {
@@ -299,6 +300,7 @@ class EventLoop {
     return ComposeStatusLine({lead,
                               {method, 3, false},
                               {drawnText, 4, false},
+                              {upText, 4, false},
                               {viewText, 1, true},
                               {timeText, 5, true},
                               {"? help", 2, true}},

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/UpAxis.h"
 #include "raster/RenderOptions.h"
 
 namespace termshade {
@@ -14,6 +15,9 @@ struct ViewerOptions {
   std::optional<double> cellAspect;     ///< unset: from the terminal, else 2.0
   bool monochrome = false;
   RenderOptions render;
+  std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
+  double theta = 0.3;            ///< the view `r` returns to, radians (SPEC 2)
+  double phi = 1.3;
 };
 
 /// Runs the full-screen viewer until the user quits; returns the exit code.

@@ -19,6 +19,7 @@ enum class ViewerAction {
   kToggleLightMode,
   kToggleTurntable,
   kToggleCulling,
+  kCycleUpAxis,
   kOpenFile,
   kNextModel,
   kPreviousModel,

@@ -21,22 +21,27 @@ std::string StatusLineError(LoadError error) {
 
 }  // namespace
 
-Loaded<Scene> LoadViewerScene(const std::string& path) {
+Loaded<Scene> LoadViewerScene(const std::string& path, std::optional<UpAxis> upAxis) {
   Loaded<Mesh> mesh =
       path.empty() ? ParseDat(DemoSceneText(), std::string(kDemoSceneName)) : LoadModelFile(path);
   if (!mesh.Ok()) return mesh.Error();
-  return PrepareScene(std::move(mesh.Value()));
+  return PrepareScene(std::move(mesh.Value()), upAxis);
 }
 
 ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
-    : paths_(options.modelPaths), render_(options.render), colour_(!options.monochrome) {
+    : paths_(options.modelPaths),
+      render_(options.render),
+      upAxis_(options.upAxis),
+      startTheta_(options.theta),
+      startPhi_(options.phi),
+      colour_(!options.monochrome) {
   render_.keepDepth = false;  // the screen shows glyphs only
   if (paths_.empty()) paths_.emplace_back();
   cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
 }
 
 std::optional<LoadError> ViewerState::LoadFirst() {
-  Loaded<Scene> scene = LoadViewerScene(paths_.front());
+  Loaded<Scene> scene = LoadViewerScene(paths_.front(), upAxis_);
   if (!scene.Ok()) return scene.Error();
   scene_ = std::move(scene.Value());
   current_ = 0;
@@ -45,7 +50,7 @@ std::optional<LoadError> ViewerState::LoadFirst() {
 }
 
 void ViewerState::OpenPath(const std::string& path) {
-  Loaded<Scene> scene = LoadViewerScene(path);
+  Loaded<Scene> scene = LoadViewerScene(path, upAxis_);
   if (!scene.Ok()) {
     message_ = StatusLineError(scene.Error());
     return;
@@ -59,7 +64,7 @@ void ViewerState::OpenPath(const std::string& path) {
 
 void ViewerState::SwitchTo(size_t index) {
   if (index == current_) return;
-  Loaded<Scene> scene = LoadViewerScene(paths_[index]);
+  Loaded<Scene> scene = LoadViewerScene(paths_[index], upAxis_);
   if (!scene.Ok()) {
     message_ = StatusLineError(scene.Error());
     return;
@@ -72,6 +77,8 @@ void ViewerState::SwitchTo(size_t index) {
 
 void ViewerState::ResetView() {
   view_ = DefaultView(scene_.diagonalModelUnits);
+  view_.theta = startTheta_;
+  view_.phi = startPhi_;
   fitRho_ = view_.rho;
   sunAzimuth_ = sunElevation_ = 0.0;
   render_.sunEye = SunFromAngles(0.0, 0.0);
@@ -91,6 +98,14 @@ void ViewerState::Orbit(double dTheta, double dPhi) {
 void ViewerState::ChangeDistance(double factor) {
   const ViewLimits limits = LimitsForDiagonal(scene_.diagonalModelUnits);
   view_.rho = std::clamp(view_.rho * factor, limits.rhoMin, limits.rhoMax);
+}
+
+// The next axis of the cycle, for this model only; the view stays (turning
+// by an axis permutation keeps the bounding box's diagonal, so the fit too).
+void ViewerState::CycleUpAxis() {
+  const UpAxis next = NextUpAxis(scene_.upAxis);
+  scene_ = PrepareScene(std::move(scene_.mesh), next);
+  message_ = "up axis " + std::string(UpAxisName(next));
 }
 
 void ViewerState::Apply(ViewerAction action) {
@@ -144,6 +159,9 @@ void ViewerState::Apply(ViewerAction action) {
       break;
     case ViewerAction::kToggleCulling:
       render_.cullBackFaces = !render_.cullBackFaces;
+      break;
+    case ViewerAction::kCycleUpAxis:
+      CycleUpAxis();
       break;
     case ViewerAction::kOpenFile:
       break;  // the event loop owns the prompt

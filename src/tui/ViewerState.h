@@ -12,8 +12,9 @@
 
 namespace termshade {
 
-/// Loads a model file, or the embedded demo scene for an empty path.
-Loaded<Scene> LoadViewerScene(const std::string& path);
+/// Loads a model file, or the embedded demo scene for an empty path; the up
+/// axis is upAxis when given, else the file's own.
+Loaded<Scene> LoadViewerScene(const std::string& path, std::optional<UpAxis> upAxis = {});
 
 /// Everything the viewer shows, changed only through actions: no terminal
 /// code here, so it is tested directly.
@@ -58,6 +59,7 @@ class ViewerState {
   void ResetView();
   void Orbit(double dTheta, double dPhi);
   void ChangeDistance(double factor);
+  void CycleUpAxis();
 
   std::vector<std::string> paths_;  ///< "" is the demo scene
   size_t current_ = 0;
@@ -66,6 +68,9 @@ class ViewerState {
   double fitRho_ = 1.0;
   double cellAspect_ = 2.0;
   RenderOptions render_;
+  std::optional<UpAxis> upAxis_;
+  double startTheta_ = 0.3;
+  double startPhi_ = 1.3;
   bool colour_ = true;
   bool lightMode_ = false;
   bool turntable_ = false;
