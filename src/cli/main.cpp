@@ -10,6 +10,7 @@
 
 #include "LoadBench.h"
 #include "MethodsBench.h"
+#include "ModelsBench.h"
 #include "TerminalBench.h"
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
@@ -272,6 +273,12 @@ int Run(int argc, char** argv) {
       ->add_option("--data", methodsBench.dataDirectory, "the scenes' directory (default data)")
       ->type_name("DIR");
 
+  termshade::ModelsBenchOptions modelsBench;
+  CLI::App* modelsCommand = benchCommand->add_subcommand(
+      "models", "per model file: loads?, up axis, faces turned outward, colours, frame ms (TSV)");
+  modelsCommand->add_option("models", modelsBench.modelPaths, "model files")->required();
+  AddUpOption(*modelsCommand, modelsBench.upAxis);
+
   termshade::LoadBenchOptions loadBench;
   CLI::App* loadCommand = benchCommand->add_subcommand(
       "load", "load time, peak memory and frame time of generated big models (OBJ, STL, PLY)");
@@ -306,6 +313,7 @@ int Run(int argc, char** argv) {
     terminalBench.viewerPath = SelfPath();
     return termshade::RunTerminalBench(terminalBench);
   }
+  if (modelsCommand->parsed()) return termshade::RunModelsBench(modelsBench);
   if (loadCommand->parsed()) {
     loadBench.executablePath = SelfPath();
     return termshade::RunLoadBench(loadBench);
