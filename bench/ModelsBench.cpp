@@ -13,7 +13,8 @@ namespace {
 
 // Tabs and newlines of a message would break the row.
 std::string OneField(std::string text) {
-  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\t' || c == '\n'; }, ' ');
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '\t' || c == '\n'; }, ' ');
   return SanitizeForTerminal(text);
 }
 
@@ -41,8 +42,7 @@ int RunModelsBench(const ModelsBenchOptions& options) {
     const size_t vertices = mesh.Value().verticesFile.size();
     const size_t colours = DistinctColours(mesh.Value().faceColors);
     const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
-    const double frameMs =
-        MedianTurntableFrameMs(scene, options.widthCells, options.heightCells);
+    const double frameMs = MedianTurntableFrameMs(scene, options.widthCells, options.heightCells);
     char timing[32];
     std::snprintf(timing, sizeof timing, "%.3f", frameMs);
     std::cout << OneField(path) << "\tyes\t" << vertices << "\t" << scene.FaceCount() << "\t"

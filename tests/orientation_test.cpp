@@ -12,8 +12,8 @@ namespace {
 Mesh Cube(Vec3 offset = {}) {
   Mesh mesh;
   for (int i = 0; i < 8; ++i) {
-    mesh.verticesFile.push_back(
-        Vec3{double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)} + offset);
+    mesh.verticesFile.push_back(Vec3{double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)} +
+                                offset);
   }
   // Counter-clockwise seen from outside.
   const uint32_t faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},

@@ -46,10 +46,9 @@ TEST_P(RealModelFrames, UprightAtTheDefaultView) {
     std::ofstream(path, std::ios::binary) << actual;
     return;
   }
-  EXPECT_EQ(test::ReadFile(path), actual) << "golden frame " << path
-                                          << " differs; the actual frame:\n"
-                                          << actual
-                                          << "(run with TERMSHADE_UPDATE_GOLDEN=1 to accept)";
+  EXPECT_EQ(test::ReadFile(path), actual)
+      << "golden frame " << path << " differs; the actual frame:\n"
+      << actual << "(run with TERMSHADE_UPDATE_GOLDEN=1 to accept)";
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, RealModelFrames, testing::ValuesIn(kRealModels),

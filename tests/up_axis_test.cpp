@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <charconv>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "geometry/Angle.h"
 #include "geometry/UpAxis.h"
@@ -180,8 +180,8 @@ TEST(Angle, RadiansOrDegrees) {
   EXPECT_DOUBLE_EQ(*ParseAngleRadians("30deg"), std::numbers::pi / 6.0);
   EXPECT_DOUBLE_EQ(*ParseAngleRadians("-90deg"), -std::numbers::pi / 2.0);
   EXPECT_DOUBLE_EQ(*ParseAngleRadians("1e1deg"), std::numbers::pi / 18.0);
-  for (const char* bad : {"", "deg", "30 deg", "30dg", "30degs", "inf", "nan", "1e999", "+-1",
-                          "0x10", "30°", " 1"}) {
+  for (const char* bad :
+       {"", "deg", "30 deg", "30dg", "30degs", "inf", "nan", "1e999", "+-1", "0x10", "30°", " 1"}) {
     EXPECT_FALSE(ParseAngleRadians(bad).has_value()) << bad;
   }
 }

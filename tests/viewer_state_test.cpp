@@ -268,8 +268,8 @@ TEST(ViewerState, UpKeyCyclesTheAxisAndKeepsTheView) {
   EXPECT_EQ(state.View().rho, view.rho);
   EXPECT_DOUBLE_EQ(state.CurrentScene().diagonalModelUnits, diagonal);
   // The same scene as preparing the file with --up y.
-  const Scene expected = PrepareScene(test::LoadMesh("tests/models/real/spider_z_up_binary.stl"),
-                                      UpAxis::kPlusY);
+  const Scene expected =
+      PrepareScene(test::LoadMesh("tests/models/real/spider_z_up_binary.stl"), UpAxis::kPlusY);
   EXPECT_EQ(state.CurrentScene().verticesWorld.size(), expected.verticesWorld.size());
   for (size_t v = 0; v < expected.verticesWorld.size(); ++v) {
     ASSERT_EQ(state.CurrentScene().verticesWorld[v], expected.verticesWorld[v]);

@@ -31,8 +31,7 @@ EdgeAdjacency::EdgeAdjacency(const Mesh& mesh) {
   for (size_t v = 0; v < vertexCount; ++v) {
     std::sort(uses_.begin() + starts_[v], uses_.begin() + starts_[v + 1],
               [](const EdgeUse& p, const EdgeUse& q) {
-                return p.highVertex != q.highVertex ? p.highVertex < q.highVertex
-                                                    : p.face < q.face;
+                return p.highVertex != q.highVertex ? p.highVertex < q.highVertex : p.face < q.face;
               });
   }
 }

@@ -85,4 +85,3 @@ size_t OrientClosedPartsOutward(Mesh& mesh, const EdgeAdjacency& edges,
 }
 
 }  // namespace termshade
-

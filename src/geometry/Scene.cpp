@@ -63,7 +63,8 @@ void AddFaceGeometry(Scene& scene, size_t face, std::vector<Vec3>& cornersScratc
 // has it; an edge is hidden when any face that has it hides it.
 void CollectEdges(Scene& scene, const EdgeAdjacency& adjacency) {
   adjacency.ForEachEdge([&scene](uint32_t low, std::span<const EdgeUse> uses) {
-    const bool hidden = std::any_of(uses.begin(), uses.end(), [](const EdgeUse& use) { return use.hidden; });
+    const bool hidden =
+        std::any_of(uses.begin(), uses.end(), [](const EdgeUse& use) { return use.hidden; });
     if (!hidden) scene.edges.push_back({{low, uses[0].highVertex}, uses[0].face});
   });
   for (const auto& segment : scene.mesh.segments) scene.edges.push_back({segment, UINT32_MAX});
@@ -135,8 +136,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
 
   // Step 2: inside-out closed parts turned outward, once.
   std::optional<EdgeAdjacency> adjacency(std::in_place, scene.mesh);
-  scene.facesTurnedOutward =
-      OrientClosedPartsOutward(scene.mesh, *adjacency, scene.verticesWorld);
+  scene.facesTurnedOutward = OrientClosedPartsOutward(scene.mesh, *adjacency, scene.verticesWorld);
   if (scene.facesTurnedOutward > 0) adjacency.emplace(scene.mesh);
 
   // Step 3: per-face normal, plane and triangles.

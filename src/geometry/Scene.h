@@ -39,7 +39,7 @@ struct SceneEdge {
 /// turned outward, faces triangulated once, unit normals and planes known.
 struct Scene {
   std::string name;
-  Mat4 worldFromFile;  ///< the up-axis turn, then the shift to the center
+  Mat4 worldFromFile;              ///< the up-axis turn, then the shift to the center
   UpAxis upAxis = UpAxis::kPlusZ;  ///< the file axis turned to +z
   bool upAxisOverridden = false;   ///< upAxis was asked for, not the file's own
   size_t facesTurnedOutward = 0;   ///< faces of inside-out closed parts reversed
