@@ -83,6 +83,8 @@ check two_models_turntable 0 "" -- "$bin" render "$src/data/cube.dat" "$src/data
 expect two_models_two_frames_each test "$(wc -l <"$work/out")" -eq 40
 check one_model_bad 1 "nope.dat: cannot open" -- "$bin" render "$work/nope.dat" "$src/data/wedge.dat" --size 30x10
 expect the_good_model_is_still_drawn test "$(wc -l <"$work/out")" -eq 10
+check bad_model_with_output 1 "nope.dat: cannot open" -- "$bin" render "$work/nope.dat" -o "$work/none.txt"
+expect bad_model_leaves_no_output_file test ! -e "$work/none.txt"
 
 # Angles: radians, or degrees with a deg suffix.
 "$bin" render "$src/data/steps.dat" --theta 0.5235987755982988 --phi 1.0471975511965976 --size 40x12 >"$work/radians"
