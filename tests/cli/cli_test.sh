@@ -112,6 +112,13 @@ expect terminal_size_is_used test "$(tr -d '\r' <"$work/typescript" | awk 'lengt
 check terminal_size_not_for_output_file 0 "" -- script -qec "stty cols 100 rows 30; '$bin' render '$src/data/cube.dat' -o '$work/frame100.txt'" "$work/typescript"
 expect output_file_is_80x24 test "$(awk 'length($0) == 80' "$work/frame100.txt" | wc -l)" -eq 24
 
+# bench models: one tab-separated row per file, the up axis and outward turn as prepared.
+check bench_models 0 "" -- "$bin" bench models "$src/tests/models/real/wuson_inside_out.off" "$src/data/cube.dat" --up z
+expect bench_models_rows test "$(wc -l <"$work/out")" -eq 3
+expect bench_models_turns_wuson_outward awk -F'\t' '$1 ~ /wuson/ && $2 == "yes" && $6 == "+z" && $7 > 3000 {found = 1} END {exit !found}' "$work/out"
+check bench_models_bad_file 1 "" -- "$bin" bench models "$work/nope.dat"
+expect bench_models_says_why grep -q "cannot open" "$work/out"
+
 # Bad input: exit 1 with file:line:col.
 check missing_file 1 "nope.dat: cannot open: No such file or directory" -- "$bin" render "$work/nope.dat"
 check malformed_file 1 "undefined_vertex.dat:14:7: vertex 12 is not defined (highest is 9)" -- \
