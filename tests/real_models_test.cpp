@@ -22,6 +22,7 @@ const RealModel kRealModels[] = {
     {"spider_y_up.obj", UpAxis::kPlusY, std::nullopt},
     {"spider_z_up_binary.stl", UpAxis::kPlusZ, std::nullopt},
     {"vase_vertex_colours.ply", UpAxis::kPlusY, std::nullopt},
+    {"vase_y_up.gltf", UpAxis::kPlusY, std::nullopt},
     // Wuson is modelled z-up though OFF's convention is +y: upright with --up z,
     // and inside out (turned outward when prepared).
     {"wuson_inside_out.off", UpAxis::kPlusY, UpAxis::kPlusZ},
@@ -36,7 +37,7 @@ class RealModelFrames : public testing::TestWithParam<RealModel> {};
 TEST_P(RealModelFrames, UprightAtTheDefaultView) {
   const RealModel& model = GetParam();
   Mesh mesh = test::LoadMesh(std::string("tests/models/real/") + model.file);
-  mesh.upAxisFile = model.conventionAxis;  // until the loader fills it (SPEC 10)
+  EXPECT_EQ(mesh.upAxisFile, model.conventionAxis);  // SPEC 10, from the loader
   const Scene scene = PrepareScene(std::move(mesh), model.upright);
   EXPECT_EQ(scene.upAxis, model.upright.value_or(model.conventionAxis));
   const std::string actual = test::RenderFrame(scene, 0.3, 1.3, 80, 24, RenderOptions{}).Text();

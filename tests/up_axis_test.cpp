@@ -112,7 +112,7 @@ std::string TurnedDat(const Mesh& mesh) {
 TEST(UpAxis, YUpObjRendersAsTheZUpDatItCameFrom) {
   Mesh obj = test::LoadMesh("tests/models/real/spider_y_up.obj");
   ASSERT_GT(obj.FaceCount(), 1000U);
-  obj.upAxisFile = UpAxis::kPlusY;  // OBJ's convention (SPEC 10)
+  ASSERT_EQ(obj.upAxisFile, UpAxis::kPlusY);  // OBJ's convention (SPEC 10), from the loader
   Loaded<Mesh> dat = ParseDat(TurnedDat(obj), "spider_z_up.dat");
   ASSERT_TRUE(dat.Ok()) << dat.Error().ToString();
   ASSERT_EQ(dat.Value().upAxisFile, UpAxis::kPlusZ);

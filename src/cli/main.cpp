@@ -208,12 +208,31 @@ int Run(int argc, char** argv) {
       ->type_name("FILE");
   renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
       ->check(CLI::Range(1, 100000));
-  renderCommand->add_option(
-      "model", render.modelPaths,
-      "model file(s), or - for standard input; several are rendered one after another")
+  AddAngleOption(*renderCommand, "--step", render.stepRadians,
+                 "turntable: theta step between frames, radians or Ndeg (default 0.1)");
+  AddUpOption(*renderCommand, render.upAxis);
+  renderCommand
+      ->add_option("--input-format", render.inputFormat,
+                   "the model's format as an extension (stl, obj, ...) where the name and "
+                   "content cannot tell it (standard input)")
+      ->type_name("EXT");
+  renderCommand
+      ->add_option_function<std::string>(
+          "--memory-budget",
+          [&render](const std::string& text) {
+            const auto bytes = termshade::ParseByteCount(text);
+            if (!bytes) {
+              throw CLI::ValidationError("--memory-budget",
+                                         "expected a size such as 4G, 512M or 1000000 (bytes)");
+            }
+            render.memoryBudgetBytes = *bytes;
+          },
+          "most memory loading may take, e.g. 4G or 512M (default: TERMSHADE_MEMORY_BUDGET, "
+          "else 2G); a model needing more is refused")
+      ->type_name("SIZE");
 
-      // Scene files: termshade generate NAME [-o FILE]
-      termshade::GenerateCommandOptions generate;
+  // Scene files: termshade generate NAME [-o FILE]
+  termshade::GenerateCommandOptions generate;
   CLI::App* generateCommand = app.add_subcommand(
       "generate", "write a shipped scene (data/*.dat) from its generator, or a test sphere");
   generateCommand
