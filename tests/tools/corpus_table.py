@@ -84,7 +84,8 @@ def table(rows, corpus):
         source = "convention" if axis == convention(name) else "the file"
         judged = UPRIGHT_AXIS[name]
         upright = "n/a" if judged is None else ("yes" if axis == judged else f"no (up is {judged}: `--up {judged.lstrip('+')}`)")
-        colours = "none" if row["face_colours"] == "0" else f'{row["face_colours"]} colours'
+        count = row["face_colours"]
+        colours = "none" if count == "0" else f"{count} colour" + ("" if count == "1" else "s")
         turned = int(row["faces_turned_outward"])
         if turned:
             fmt += f", {turned} faces turned outward"
