@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "FrameTiming.h"
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
 #include "io/MeshExport.h"
@@ -63,26 +64,8 @@ ChildRun RunRenderChild(const LoadBenchOptions& options, const std::string& mode
 double MedianFrameMs(const LoadBenchOptions& options, const std::string& modelPath) {
   Loaded<Mesh> mesh = LoadModelFile(modelPath);
   if (!mesh.Ok()) return -1.0;
-  const Scene scene = PrepareScene(std::move(mesh.Value()));
-  RenderOptions render;
-  render.keepDepth = false;
-  Renderer renderer;
-  DepthBuffer depth;
-  CellBuffer cells;
-  depth.Resize(options.widthCells, options.heightCells);
-  cells.Resize(options.widthCells, options.heightCells);
-  std::vector<double> frameMs;
-  ViewParams view = DefaultView(scene.diagonalModelUnits);
-  for (int frame = 0; frame < 21; ++frame) {
-    view.theta += 0.1;
-    const Camera camera = FitCamera(scene, view, options.widthCells, options.heightCells, 2.0);
-    const Clock::time_point start = Clock::now();
-    renderer.Render(scene, camera, render, depth, cells);
-    if (frame > 0) {  // the first frame warms the caches
-      frameMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    }
-  }
-  return Median(frameMs);
+  return MedianTurntableFrameMs(PrepareScene(std::move(mesh.Value())), options.widthCells,
+                                options.heightCells);
 }
 
 std::string WriteModel(const std::string& directory, size_t triangles, const std::string& format) {

@@ -353,3 +353,47 @@ TEST_F(PathCompletionTest, KeepsTheHomeAsTyped) {
 
 }  // namespace
 }  // namespace termshade
+
+namespace termshade {
+namespace {
+
+TEST(ViewerState, UpKeyCyclesTheAxisAndKeepsTheView) {
+  ViewerOptions options;
+  options.modelPaths = {test::SourcePath("tests/models/real/spider_z_up_binary.stl")};
+  options.theta = 0.5;
+  ViewerState state(options, 0.0);
+  ASSERT_FALSE(state.LoadFirst().has_value());
+  EXPECT_DOUBLE_EQ(state.View().theta, 0.5);
+  state.Apply(ViewerAction::kOrbitRight);
+  const ViewParams view = state.View();
+  const double diagonal = state.CurrentScene().diagonalModelUnits;
+  EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusZ);
+  EXPECT_EQ(ActionForChar('u'), ViewerAction::kCycleUpAxis);
+  state.Apply(ViewerAction::kCycleUpAxis);
+  EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusY);
+  EXPECT_EQ(state.Message(), "up axis +y");
+  EXPECT_EQ(state.View().theta, view.theta);
+  EXPECT_EQ(state.View().rho, view.rho);
+  EXPECT_DOUBLE_EQ(state.CurrentScene().diagonalModelUnits, diagonal);
+  // The same scene as preparing the file with --up y.
+  const Scene expected =
+      PrepareScene(test::LoadMesh("tests/models/real/spider_z_up_binary.stl"), UpAxis::kPlusY);
+  EXPECT_EQ(state.CurrentScene().verticesWorld.size(), expected.verticesWorld.size());
+  for (size_t v = 0; v < expected.verticesWorld.size(); ++v) {
+    ASSERT_EQ(state.CurrentScene().verticesWorld[v], expected.verticesWorld[v]);
+  }
+  for (int i = 0; i < 6; ++i) state.Apply(ViewerAction::kCycleUpAxis);
+  EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusY);  // six presses: round the cycle
+}
+
+TEST(ViewerState, UpOptionAppliesToEveryModel) {
+  ViewerOptions options;
+  options.upAxis = UpAxis::kMinusX;
+  ViewerState state(options, 0.0);
+  ASSERT_FALSE(state.LoadFirst().has_value());
+  EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kMinusX);
+  EXPECT_TRUE(state.CurrentScene().upAxisOverridden);
+}
+
+}  // namespace
+}  // namespace termshade

@@ -1,9 +1,13 @@
 #include "cli/RenderCommand.h"
 
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <iostream>
+#include <optional>
 
 #include "geometry/FitCamera.h"
 #include "io/FrameFormats.h"
@@ -18,6 +22,82 @@ namespace {
 int UsageError(const std::string& message) {
   std::cerr << "termshade render: " << message << "\n";
   return 2;
+}
+
+// The frame size: --size, else the terminal's when the frames go to one.
+std::pair<int, int> FrameSizeCells(const RenderCommandOptions& options) {
+  if (options.widthCells > 0 && options.heightCells > 0) {
+    return {options.widthCells, options.heightCells};
+  }
+  winsize size{};
+  if (options.outputPath.empty() && isatty(STDOUT_FILENO) == 1 &&
+      ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0 && size.ws_row > 1) {
+    return {std::min<int>(size.ws_col, 4096), std::min<int>(size.ws_row - 1, 2048)};
+  }
+  return {kDefaultWidthCells, kDefaultHeightCells};
+}
+
+// What the frames are drawn into and written to, reused from model to model.
+struct FrameSink {
+  Renderer renderer;
+  DepthBuffer depth;
+  CellBuffer cells;
+  Renderer centerRenderer;  ///< json of a glyph mode: the one-sample frame beside it
+  DepthBuffer centerDepth;
+  CellBuffer centerCells;
+  std::string text;
+  std::optional<OutputFile> file;  ///< unset: standard output
+};
+
+// What one frame becomes in the chosen format.
+void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& renderOptions,
+                 FrameFormat format, ColourMode colourMode, FrameSink& sink) {
+  std::string& text = sink.text;
+  if (format == FrameFormat::kText) AppendTextFrame(sink.cells, text);
+  if (format == FrameFormat::kAnsi) {
+    AppendAnsiFrame(sink.cells, scene.mesh.faceColors, renderOptions.ramp.LevelCount(), colourMode,
+                    text);
+  }
+  if (format != FrameFormat::kJson) return;
+  if (sink.renderer.LastSampleGrid().Count() <= 1) {
+    AppendJsonFrame(sink.cells, sink.depth, scene, camera, renderOptions, text);
+    return;
+  }
+  // Several samples a cell: faces and depth at the centers come from a one-sample frame.
+  RenderOptions centerOptions = renderOptions;
+  centerOptions.glyphs = GlyphMode::kRamp;
+  centerOptions.variant.samples = {1, 1};
+  sink.centerRenderer.Render(scene, camera, centerOptions, sink.centerDepth, sink.centerCells);
+  const JsonSamples samples{sink.renderer.LastSampleGrid(), sink.renderer.Samples(),
+                            sink.centerCells, sink.centerDepth};
+  AppendJsonFrame(sink.cells, sink.depth, scene, camera, renderOptions, text, &samples);
+}
+
+// The turntable of one model: options.frames frames, theta advancing by the
+// step. Returns the output's error, if any.
+std::optional<std::string> WriteFrames(const Scene& scene, const RenderCommandOptions& options,
+                                       const RenderOptions& renderOptions, FrameFormat format,
+                                       ColourMode colourMode, FrameSink& sink) {
+  ViewParams view = DefaultView(scene.diagonalModelUnits);
+  view.theta = options.theta;
+  view.phi = options.phi;
+  if (options.rho > 0.0) view.rho = options.rho;
+  const int widthCells = sink.cells.WidthCells(), heightCells = sink.cells.HeightCells();
+  for (int frame = 0; frame < options.frames; ++frame) {
+    ViewParams frameView = view;
+    frameView.theta = view.theta + frame * options.stepRadians;
+    const Camera camera = FitCamera(scene, frameView, widthCells, heightCells, options.cellAspect);
+    sink.renderer.Render(scene, camera, renderOptions, sink.depth, sink.cells);
+    sink.text.clear();
+    AppendFrame(scene, camera, renderOptions, format, colourMode, sink);
+    const std::string& text = sink.text;
+    if (sink.file) {
+      if (auto problem = sink.file->Write(text)) return problem;
+    } else {
+      std::cout.write(text.data(), static_cast<std::streamsize>(text.size()));
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -43,38 +123,32 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {
     return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
   }
-
-  if (!options.outputPath.empty() && options.modelPath != "-" &&
-      SameFile(options.outputPath, options.modelPath)) {
-    return UsageError("-o " + SanitizeForTerminal(options.outputPath) +
-                      " is the model itself; refusing to overwrite it");
+  for (const std::string& modelPath : options.modelPaths) {
+    if (!options.outputPath.empty() && modelPath != "-" &&
+        SameFile(options.outputPath, modelPath)) {
+      return UsageError("-o " + SanitizeForTerminal(options.outputPath) +
+                        " is the model itself; refusing to overwrite it");
+    }
   }
 
-  // Step 2: the model.
-  LoadOptions loadOptions;
-  loadOptions.formatHint = options.inputFormat;
-  loadOptions.importerOnly = options.reader == "assimp";
-  if (options.memoryBudgetBytes > 0) loadOptions.memoryBudgetBytes = options.memoryBudgetBytes;
-  Loaded<Mesh> mesh = LoadModelFile(options.modelPath, loadOptions);
-  if (!mesh.Ok()) {
-    std::cerr << mesh.Error().ToString() << "\n";
-    return 1;
-  }
-  const Scene scene = PrepareScene(std::move(mesh.Value()));
-
-  // Step 3: the output: a file replaced whole (never half-written), or stdout.
-  std::optional<OutputFile> file;
+  // Step 2: the output, opened once a model has loaded (a bad model leaves no
+  // file): a file replaced whole (never half-written), or stdout.
+  FrameSink sink;
   const auto outputFailed = [&](const std::string& why) {
     std::cerr << SanitizeForTerminal(options.outputPath) << ": " << SanitizeForTerminal(why)
               << "\n";
     return 1;
   };
-  if (!options.outputPath.empty()) {
-    file.emplace(options.outputPath);
-    if (const auto problem = file->Open()) return outputFailed(*problem);
-  }
+  bool opened = false;
+  const auto openOutput = [&]() -> std::optional<std::string> {
+    if (opened || options.outputPath.empty()) return std::nullopt;
+    opened = true;
+    sink.file.emplace(options.outputPath);
+    return sink.file->Open();
+  };
 
-  // Step 4: the frames, one after another.
+  // Step 3: each model's frames, one model after another; a model that
+  // cannot be read is reported and the others are still drawn.
   RenderOptions renderOptions;
   renderOptions.method = *method;
   renderOptions.shade = *shade;
@@ -83,61 +157,42 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.twoColour = *format == FrameFormat::kAnsi;  // text and json have no colours
   renderOptions.cullBackFaces = !options.noCull;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
-  ViewParams view = DefaultView(scene.diagonalModelUnits);
-  view.theta = options.theta;
-  view.phi = options.phi;
-  if (options.rho > 0.0) view.rho = options.rho;
-
-  Renderer renderer;
-  DepthBuffer depth;
-  CellBuffer cells;
-  depth.Resize(options.widthCells, options.heightCells);
-  cells.Resize(options.widthCells, options.heightCells);
-  Renderer centerRenderer;  // json of a glyph mode: the one-sample frame beside it
-  RenderOptions centerOptions = renderOptions;
-  centerOptions.glyphs = GlyphMode::kRamp;
-  centerOptions.variant.samples = {1, 1};
-  CellBuffer centerCells(options.widthCells, options.heightCells);
-  DepthBuffer centerDepth;
-  centerDepth.Resize(options.widthCells, options.heightCells);
-  std::string text;
-  for (int frame = 0; frame < options.frames; ++frame) {
-    ViewParams frameView = view;
-    frameView.theta = view.theta + frame * options.stepRadians;
-    const Camera camera =
-        FitCamera(scene, frameView, options.widthCells, options.heightCells, options.cellAspect);
-    renderer.Render(scene, camera, renderOptions, depth, cells);
-    text.clear();
-    if (*format == FrameFormat::kText) AppendTextFrame(cells, text);
-    if (*format == FrameFormat::kAnsi) {
-      AppendAnsiFrame(cells, scene.mesh.faceColors, renderOptions.ramp.LevelCount(),
-                      ResolveColourMode(*colourMode), text);
+  const auto [widthCells, heightCells] = FrameSizeCells(options);
+  sink.depth.Resize(widthCells, heightCells);
+  sink.cells.Resize(widthCells, heightCells);
+  sink.centerDepth.Resize(widthCells, heightCells);
+  sink.centerCells.Resize(widthCells, heightCells);
+  LoadOptions loadOptions;
+  loadOptions.formatHint = options.inputFormat;
+  loadOptions.importerOnly = options.reader == "assimp";
+  if (options.memoryBudgetBytes > 0) loadOptions.memoryBudgetBytes = options.memoryBudgetBytes;
+  int exitCode = 0;
+  for (const std::string& modelPath : options.modelPaths) {
+    Loaded<Mesh> mesh = LoadModelFile(modelPath, loadOptions);
+    if (!mesh.Ok()) {
+      std::cerr << mesh.Error().ToString() << "\n";
+      exitCode = 1;
+      continue;
     }
-    if (*format == FrameFormat::kJson && renderer.LastSampleGrid().Count() > 1) {
-      // Several samples a cell: faces and depth at the centers come from a one-sample frame.
-      centerRenderer.Render(scene, camera, centerOptions, centerDepth, centerCells);
-      const JsonSamples samples{renderer.LastSampleGrid(), renderer.Samples(), centerCells,
-                                centerDepth};
-      AppendJsonFrame(cells, depth, scene, camera, renderOptions, text, &samples);
-    } else if (*format == FrameFormat::kJson) {
-      AppendJsonFrame(cells, depth, scene, camera, renderOptions, text);
-    }
-    if (file) {
-      if (const auto problem = file->Write(text)) return outputFailed(*problem);
-    } else {
-      std::cout.write(text.data(), static_cast<std::streamsize>(text.size()));
+    const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
+    if (const auto problem = openOutput()) return outputFailed(*problem);
+    if (const auto problem = WriteFrames(scene, options, renderOptions, *format,
+                                         ResolveColourMode(*colourMode), sink)) {
+      return outputFailed(*problem);
     }
   }
-  if (file) {
-    if (const auto problem = file->Commit()) return outputFailed(*problem);
-    return 0;
+
+  // Step 4: the file committed whole, or stdout flushed.
+  if (sink.file) {
+    if (const auto problem = sink.file->Commit()) return outputFailed(*problem);
+    return exitCode;
   }
   std::cout.flush();
   if (!std::cout) {
     std::cerr << "termshade render: writing the frames to standard output failed\n";
     return 1;
   }
-  return 0;
+  return exitCode;
 }
 
 }  // namespace termshade

@@ -1,17 +1,21 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include "geometry/UpAxis.h"
 
 #include "raster/RenderOptions.h"
 
 namespace termshade {
 
-/// `termshade render MODEL [options]`: headless frames to stdout or a file.
+/// `termshade render MODEL... [options]`: headless frames to stdout or a file.
 struct RenderCommandOptions {
-  std::string modelPath;
-  int widthCells = 80;
-  int heightCells = 24;
+  std::vector<std::string> modelPaths;  ///< rendered one after another
+  int widthCells = 0;                   ///< 0 (with heightCells): see kDefault*Cells
+  int heightCells = 0;
   double cellAspect = 2.0;
   double theta = 0.3;
   double phi = 1.3;
@@ -32,7 +36,13 @@ struct RenderCommandOptions {
   /// (render: 256, so dumps do not depend on the environment; viewer: auto).
   std::string colour;
   bool mono = false;  ///< --mono: --color none
+  std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
 };
+
+/// Frame size without --size when stdout is not a terminal (or -o is given);
+/// on a terminal, its width and its height less one row (the prompt stays visible).
+constexpr int kDefaultWidthCells = 80;
+constexpr int kDefaultHeightCells = 24;
 
 /// Runs the command; returns the process exit code (0 ok, 1 bad input, 2 bad usage).
 int RunRenderCommand(const RenderCommandOptions& options);

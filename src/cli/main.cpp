@@ -5,15 +5,19 @@
 #include <cmath>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <regex>
 
 #include "FidelityBench.h"
 #include "LoadBench.h"
 #include "MethodsBench.h"
+#include "ModelsBench.h"
 #include "TerminalBench.h"
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
 #include "cli/RenderCommand.h"
+#include "geometry/Angle.h"
+#include "geometry/UpAxis.h"
 #include "io/LoadBudget.h"
 #include "io/LoadError.h"
 #include "io/ModelLoader.h"
@@ -80,16 +84,49 @@ void AddSizeOption(CLI::App& command, RenderCommandOptions& options) {
             options.widthCells = cols;
             options.heightCells = rows;
           },
-          "frame size in cells, COLSxROWS (default 80x24)")
+          "frame size in cells, COLSxROWS (default: the terminal's, one row less, when "
+          "stdout is one; else 80x24)")
       ->type_name("COLSxROWS");
+}
+
+// An angle in radians, or in degrees with a `deg` suffix.
+void AddAngleOption(CLI::App& command, const std::string& name, double& radians,
+                    const std::string& description) {
+  command
+      .add_option_function<std::string>(
+          name,
+          [&radians, name](const std::string& text) {
+            const auto angle = termshade::ParseAngleRadians(text);
+            if (!angle) {
+              throw CLI::ValidationError(name, "expected radians (0.3) or degrees (30deg)");
+            }
+            radians = *angle;
+          },
+          description)
+      ->type_name("ANGLE");
+}
+
+void AddUpOption(CLI::App& command, std::optional<termshade::UpAxis>& upAxis) {
+  command
+      .add_option_function<std::string>(
+          "--up",
+          [&upAxis](const std::string& text) {
+            upAxis = termshade::ParseUpAxis(text);
+            if (!upAxis) throw CLI::ValidationError("--up", "expected x, y, z, -x, -y or -z");
+          },
+          "the file's up axis, turned to the screen's up: x|y|z|-x|-y|-z "
+          "(default: what the file declares, else its format's convention)")
+      ->type_name("AXIS");
 }
 
 void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
   AddSizeOption(command, options);
   command.add_option("--cell-aspect", options.cellAspect, "cell height / cell width (default 2.0)")
       ->check(CLI::Range(0.25, 8.0));
-  command.add_option("--theta", options.theta, "eye azimuth, radians (default 0.3)");
-  command.add_option("--phi", options.phi, "eye polar angle from +z, radians (default 1.3)");
+  AddAngleOption(command, "--theta", options.theta,
+                 "eye azimuth about the up axis, radians or Ndeg (default 0.3)");
+  AddAngleOption(command, "--phi", options.phi,
+                 "eye polar angle from the up axis, radians or Ndeg (default 1.3)");
   command
       .add_option("--rho", options.rho,
                   "eye distance, model units (default 3 x 0.6 x bounding-box diagonal)")
@@ -138,6 +175,9 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.render.ramp = termshade::ShadeRamp(look.ramp);
   viewer.render.cullBackFaces = !look.noCull;
   if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
+  viewer.upAxis = look.upAxis;
+  viewer.theta = look.theta;
+  viewer.phi = look.phi;
   return termshade::RunViewer(viewer);
 }
 
@@ -162,11 +202,16 @@ int Run(int argc, char** argv) {
                  "cell height / cell width (default: from the terminal, else 2.0)")
       ->check(CLI::Range(0.25, 8.0));
   AddLookOptions(app, viewerLook);
+  AddUpOption(app, viewerLook.upAxis);
+  AddAngleOption(app, "--theta", viewerLook.theta, "starting eye azimuth, radians or Ndeg (0.3)");
+  AddAngleOption(app, "--phi", viewerLook.phi, "starting eye polar angle, radians or Ndeg (1.3)");
 
   // Headless frames: termshade render MODEL [options]
   RenderCommandOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "render frames to stdout or a file");
-  renderCommand->add_option("model", render.modelPath, "model file, or - for standard input")
+  renderCommand
+      ->add_option("model", render.modelPaths,
+                   "model file(s), or - for standard input; several are rendered one after another")
       ->required()
       ->type_name("MODEL");
   AddViewOptions(*renderCommand, render);
@@ -177,8 +222,9 @@ int Run(int argc, char** argv) {
       ->type_name("FILE");
   renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
       ->check(CLI::Range(1, 100000));
-  renderCommand->add_option("--step", render.stepRadians,
-                            "turntable: theta step between frames, radians (default 0.1)");
+  AddAngleOption(*renderCommand, "--step", render.stepRadians,
+                 "turntable: theta step between frames, radians or Ndeg (default 0.1)");
+  AddUpOption(*renderCommand, render.upAxis);
   renderCommand
       ->add_option("--input-format", render.inputFormat,
                    "the model's format as an extension (stl, obj, ...) where the name and "
@@ -266,6 +312,12 @@ int Run(int argc, char** argv) {
       ->add_option("--data", methodsBench.dataDirectory, "the scenes' directory (default data)")
       ->type_name("DIR");
 
+  termshade::ModelsBenchOptions modelsBench;
+  CLI::App* modelsCommand = benchCommand->add_subcommand(
+      "models", "per model file: loads?, up axis, faces turned outward, colours, frame ms (TSV)");
+  modelsCommand->add_option("models", modelsBench.modelPaths, "model files")->required();
+  AddUpOption(*modelsCommand, modelsBench.upAxis);
+
   termshade::LoadBenchOptions loadBench;
   CLI::App* loadCommand = benchCommand->add_subcommand(
       "load", "load time, peak memory and frame time of generated big models (OBJ, STL, PLY)");
@@ -324,6 +376,7 @@ int Run(int argc, char** argv) {
     terminalBench.viewerPath = SelfPath();
     return termshade::RunTerminalBench(terminalBench);
   }
+  if (modelsCommand->parsed()) return termshade::RunModelsBench(modelsBench);
   if (loadCommand->parsed()) {
     loadBench.executablePath = SelfPath();
     return termshade::RunLoadBench(loadBench);

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <optional>
+#include <span>
 #include <utility>
 
+#include "geometry/EdgeAdjacency.h"
 #include "geometry/FaceNormal.h"
+#include "geometry/OutwardOrientation.h"
 #include "geometry/Triangulate.h"
 
 namespace termshade {
@@ -56,43 +59,24 @@ void AddFaceGeometry(Scene& scene, size_t face, std::vector<Vec3>& cornersScratc
   scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
 }
 
-// Unique undirected edges; an edge is hidden when any face that has it hides it.
-void CollectEdges(Scene& scene) {
-  std::map<std::pair<uint32_t, uint32_t>, std::pair<uint32_t, bool>> edgeFaceHidden;
-  const Mesh& mesh = scene.mesh;
-  for (size_t face = 0; face < mesh.FaceCount(); ++face) {
-    const auto corners = mesh.Face(face);
-    for (size_t i = 0; i < corners.size(); ++i) {
-      const uint32_t a = corners[i], b = corners[(i + 1) % corners.size()];
-      if (a == b) continue;
-      const bool hidden = mesh.edgeHidden[mesh.faceStarts[face] + i] != 0;
-      auto [it, inserted] = edgeFaceHidden.try_emplace({std::min(a, b), std::max(a, b)},
-                                                       static_cast<uint32_t>(face), hidden);
-      if (!inserted) it->second.second = it->second.second || hidden;
-    }
-  }
-  for (const auto& [key, value] : edgeFaceHidden) {
-    if (!value.second) scene.edges.push_back({{key.first, key.second}, value.first});
-  }
-  for (const auto& segment : mesh.segments) scene.edges.push_back({segment, UINT32_MAX});
+// Unique undirected edges in (low, high) order, each with the first face that
+// has it; an edge is hidden when any face that has it hides it.
+void CollectEdges(Scene& scene, const EdgeAdjacency& adjacency) {
+  adjacency.ForEachEdge([&scene](uint32_t low, std::span<const EdgeUse> uses) {
+    const bool hidden =
+        std::any_of(uses.begin(), uses.end(), [](const EdgeUse& use) { return use.hidden; });
+    if (!hidden) scene.edges.push_back({{low, uses[0].highVertex}, uses[0].face});
+  });
+  for (const auto& segment : scene.mesh.segments) scene.edges.push_back({segment, UINT32_MAX});
 }
 
-// Closed (every directed edge has its reverse in exactly one other face),
-// connected, and convex at every edge (each face's corners lie on or behind
-// its neighbours' planes): a convex solid, where facing decides visibility.
-bool IsConvexClosedSolid(const Scene& scene) {
+// Closed (every edge used once each way), connected, and convex at every
+// edge (each face's corners lie on or behind its neighbour's plane): a convex
+// solid, where facing decides visibility.
+bool IsConvexClosedSolid(const Scene& scene, const EdgeAdjacency& adjacency) {
   const Mesh& mesh = scene.mesh;
   const size_t faceCount = mesh.FaceCount();
   if (faceCount < 4 || scene.triangles.empty()) return false;
-  std::map<std::pair<uint32_t, uint32_t>, uint32_t> faceOfEdge;
-  for (uint32_t f = 0; f < faceCount; ++f) {
-    const auto corners = mesh.Face(f);
-    for (size_t i = 0; i < corners.size(); ++i) {
-      if (!faceOfEdge.try_emplace({corners[i], corners[(i + 1) % corners.size()]}, f).second) {
-        return false;  // an edge used twice the same way
-      }
-    }
-  }
   std::vector<uint32_t> component(faceCount);
   for (uint32_t f = 0; f < faceCount; ++f) component[f] = f;
   auto root = [&](uint32_t f) {
@@ -100,18 +84,26 @@ bool IsConvexClosedSolid(const Scene& scene) {
     return f;
   };
   const double tolerance = 1e-9 * std::max(1.0, scene.diagonalModelUnits);
-  for (const auto& [edge, f] : faceOfEdge) {
-    const auto twin = faceOfEdge.find({edge.second, edge.first});
-    if (twin == faceOfEdge.end()) return false;
-    const uint32_t g = twin->second;
-    component[root(f)] = root(g);
-    const Vec3 n = scene.facePlanesWorld[f].normal;
-    if (n == Vec3{}) return false;
+  auto behindPlane = [&](uint32_t f, uint32_t g) {
+    const FacePlane& plane = scene.facePlanesWorld[f];
+    if (plane.normal == Vec3{}) return false;
     for (uint32_t v : mesh.Face(g)) {
-      if (Dot(n, scene.verticesWorld[v]) - scene.facePlanesWorld[f].offset > tolerance)
-        return false;
+      if (Dot(plane.normal, scene.verticesWorld[v]) - plane.offset > tolerance) return false;
     }
-  }
+    return true;
+  };
+  bool convex = true;
+  adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
+    if (!convex) return;
+    if (uses.size() != 2 || uses[0].forward == uses[1].forward) {
+      convex = false;  // open, non-manifold or inconsistently wound
+      return;
+    }
+    const uint32_t f = uses[0].face, g = uses[1].face;
+    component[root(f)] = root(g);
+    convex = behindPlane(f, g) && behindPlane(g, f);
+  });
+  if (!convex) return false;
   for (uint32_t f = 0; f < faceCount; ++f) {
     if (root(f) != root(0)) return false;
   }
@@ -120,33 +112,42 @@ bool IsConvexClosedSolid(const Scene& scene) {
 
 }  // namespace
 
-Scene PrepareScene(Mesh mesh) {
+Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   Scene scene;
   scene.name = mesh.name;
   scene.mesh = std::move(mesh);
+  scene.upAxis = upOverride.value_or(scene.mesh.upAxisFile);
+  scene.upAxisOverridden = upOverride.has_value();
 
-  // Step 1: world space is file space centered on the bounding box.
-  const Bounds bounds = FiniteBounds(scene.mesh.verticesFile);
-  const Vec3 center = bounds.Empty() ? Vec3{} : (bounds.low + bounds.high) * 0.5;
-  scene.worldFromFile = Mat4::Translation(-center);
-  scene.diagonalModelUnits = bounds.Empty() ? 0.0 : Length(bounds.high - bounds.low);
+  // Step 1: world space is file space turned up (+z), centered on the bounding box.
   scene.verticesWorld.reserve(scene.mesh.verticesFile.size());
   for (const Vec3& p : scene.mesh.verticesFile) {
-    scene.verticesWorld.push_back(p - center);
-    if (IsFinite(p)) {
-      scene.radiusModelUnits = std::max(scene.radiusModelUnits, Length(scene.verticesWorld.back()));
-    }
+    scene.verticesWorld.push_back(ZUpFromFile(scene.upAxis, p));
+  }
+  const Bounds bounds = FiniteBounds(scene.verticesWorld);
+  const Vec3 center = bounds.Empty() ? Vec3{} : (bounds.low + bounds.high) * 0.5;
+  scene.worldFromFile = Mat4::Translation(-center) * ZUpFromFile(scene.upAxis);
+  scene.diagonalModelUnits = bounds.Empty() ? 0.0 : Length(bounds.high - bounds.low);
+  for (Vec3& p : scene.verticesWorld) {
+    const bool finite = IsFinite(p);
+    p = p - center;
+    if (finite) scene.radiusModelUnits = std::max(scene.radiusModelUnits, Length(p));
   }
 
-  // Step 2: per-face normal, plane and triangles.
+  // Step 2: inside-out closed parts turned outward, once.
+  std::optional<EdgeAdjacency> adjacency(std::in_place, scene.mesh);
+  scene.facesTurnedOutward = OrientClosedPartsOutward(scene.mesh, *adjacency, scene.verticesWorld);
+  if (scene.facesTurnedOutward > 0) adjacency.emplace(scene.mesh);
+
+  // Step 3: per-face normal, plane and triangles.
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;
   scene.faceTriangleStarts.push_back(0);
   for (size_t face = 0; face < scene.mesh.FaceCount(); ++face) {
     AddFaceGeometry(scene, face, cornersScratch, trianglesScratch);
   }
-  CollectEdges(scene);
-  scene.convexClosedSolid = IsConvexClosedSolid(scene);
+  CollectEdges(scene, *adjacency);
+  scene.convexClosedSolid = IsConvexClosedSolid(scene, *adjacency);
   return scene;
 }
 

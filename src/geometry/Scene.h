@@ -2,11 +2,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/Mat4.h"
 #include "geometry/Mesh.h"
+#include "geometry/UpAxis.h"
 
 namespace termshade {
 
@@ -32,17 +34,21 @@ struct SceneEdge {
   uint32_t face = 0;
 };
 
-/// A model made ready for rendering from any view: centered on its bounding
-/// box (world space), faces triangulated once, unit normals and planes known.
+/// A model made ready for rendering from any view: turned so its up axis is
+/// +z and centered on its bounding box (world space, SPEC 1), closed parts
+/// turned outward, faces triangulated once, unit normals and planes known.
 struct Scene {
   std::string name;
-  Mat4 worldFromFile;
+  Mat4 worldFromFile;              ///< the up-axis turn, then the shift to the center
+  UpAxis upAxis = UpAxis::kPlusZ;  ///< the file axis turned to +z
+  bool upAxisOverridden = false;   ///< upAxis was asked for, not the file's own
+  size_t facesTurnedOutward = 0;   ///< faces of inside-out closed parts reversed
   std::vector<Vec3> verticesWorld;
   std::vector<SceneTriangle> triangles;
   std::vector<FacePlane> facePlanesWorld;    ///< per face, world space
   std::vector<uint32_t> faceTriangleStarts;  ///< FaceCount() + 1 entries into triangles
   std::vector<SceneEdge> edges;
-  Mesh mesh;                        ///< the source model, for exact references and export
+  Mesh mesh;  ///< the source model (closed parts outward), for exact references and export
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex
   /// One closed, consistently oriented, connected surface with every edge
@@ -52,8 +58,9 @@ struct Scene {
   size_t FaceCount() const { return facePlanesWorld.size(); }
 };
 
-/// Centers, triangulates and measures a mesh. Faces with non-finite
+/// Turns, centers, orients, triangulates and measures a mesh. The up axis is
+/// upOverride when given, else mesh.upAxisFile. Faces with non-finite
 /// coordinates keep their number but get no triangles.
-Scene PrepareScene(Mesh mesh);
+Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride = std::nullopt);
 
 }  // namespace termshade

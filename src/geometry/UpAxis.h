@@ -23,4 +23,7 @@ UpAxis NextUpAxis(UpAxis axis);
 /// The exact signed axis permutation that turns `axis` into +z (a proper rotation).
 Mat4 ZUpFromFile(UpAxis axis);
 
+/// The same turn applied to a point: components copied with their signs, so exact.
+Vec3 ZUpFromFile(UpAxis axis, Vec3 pFile);
+
 }  // namespace termshade

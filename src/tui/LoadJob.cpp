@@ -25,7 +25,8 @@ LoadJob::Shared::~Shared() {
   }
 }
 
-LoadJob::LoadJob(std::string path) : path_(std::move(path)), shared_(std::make_shared<Shared>()) {
+LoadJob::LoadJob(std::string path, std::optional<UpAxis> upAxis)
+    : path_(std::move(path)), shared_(std::make_shared<Shared>()) {
   // The event loop's signals (Ctrl-C, Ctrl-Z...) go to the main thread: block
   // them while the worker starts, so it inherits the mask.
   sigset_t loopSignals, previous;
@@ -34,11 +35,12 @@ LoadJob::LoadJob(std::string path) : path_(std::move(path)), shared_(std::make_s
     sigaddset(&loopSignals, signalNumber);
   }
   pthread_sigmask(SIG_BLOCK, &loopSignals, &previous);
-  worker_ = std::thread(Work, shared_, path_);
+  worker_ = std::thread(Work, shared_, path_, upAxis);
   pthread_sigmask(SIG_SETMASK, &previous, nullptr);
 }
 
-void LoadJob::Work(const std::shared_ptr<Shared>& shared, const std::string& path) {
+void LoadJob::Work(const std::shared_ptr<Shared>& shared, const std::string& path,
+                   std::optional<UpAxis> upAxis) {
   // A stack for the fatal-signal handler, as the main thread has: a crash in
   // an importer still gives the terminal back.
   std::vector<char> alternateStack(size_t{64} * 1024);
@@ -53,7 +55,7 @@ void LoadJob::Work(const std::shared_ptr<Shared>& shared, const std::string& pat
   Loaded<Mesh> mesh = LoadViewerMesh(path, options);
   if (mesh.Ok()) {
     shared->preparing.store(true);
-    shared->result.emplace(PrepareScene(std::move(mesh.Value())));
+    shared->result.emplace(PrepareScene(std::move(mesh.Value()), upAxis));
   } else {
     shared->result.emplace(mesh.Error());
   }

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "geometry/Scene.h"
+#include "geometry/UpAxis.h"
 #include "io/LoadError.h"
 
 namespace termshade {
@@ -17,7 +18,8 @@ namespace termshade {
 /// polls with its other descriptors.
 class LoadJob {
  public:
-  explicit LoadJob(std::string path);
+  /// upAxis: the viewer's --up, else each file's own (SPEC 10).
+  LoadJob(std::string path, std::optional<UpAxis> upAxis);
   /// Joins a finished worker; asks an unfinished one to stop and lets it end
   /// on its own (see Abandoned).
   ~LoadJob();
@@ -53,7 +55,8 @@ class LoadJob {
     std::optional<Loaded<Scene>> result;  ///< written by the worker before finished
     int readyPipe[2] = {-1, -1};
   };
-  static void Work(const std::shared_ptr<Shared>& shared, const std::string& path);
+  static void Work(const std::shared_ptr<Shared>& shared, const std::string& path,
+                   std::optional<UpAxis> upAxis);
 
   std::string path_;
   std::shared_ptr<Shared> shared_;

@@ -35,25 +35,6 @@ constexpr int kMinRows = 4;
 constexpr auto kTurntablePeriod = std::chrono::milliseconds(40);  // at most 25 frames a second
 constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is looked at
 
-// The up axis as the status line shows it.
-std::string UpAxisLabel(UpAxis axis) {
-  switch (axis) {
-    case UpAxis::kPlusX:
-      return "+x";
-    case UpAxis::kMinusX:
-      return "-x";
-    case UpAxis::kPlusY:
-      return "+y";
-    case UpAxis::kMinusY:
-      return "-y";
-    case UpAxis::kPlusZ:
-      return "+z";
-    case UpAxis::kMinusZ:
-      return "-z";
-  }
-  return "";
-}
-
 /// How the event loop ended.
 struct LoopOutcome {
   int signalNumber = 0;          ///< the signal that ended it, or 0 (q)
@@ -147,7 +128,7 @@ class EventLoop {
     std::optional<LoadRequest> request = state_.TakeLoadRequest();
     if (!request) return;
     jobRequest_ = std::move(*request);
-    job_ = std::make_unique<LoadJob>(jobRequest_.path);
+    job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.UpAxisOverride());
     shownLoadingText_.clear();
     dirty_ = true;
   }
@@ -396,7 +377,7 @@ class EventLoop {
     fields.method = std::string(MethodName(render.method)) + " " +
                     std::string(ShadeModeName(render.shade)) +
                     (render.cullBackFaces ? "" : " 2-sided");
-    fields.upAxis = UpAxisLabel(scene.mesh.upAxisFile);
+    fields.upAxis = std::string(UpAxisName(scene.upAxis));
     fields.vertices = scene.verticesWorld.size();
     fields.faces = scene.FaceCount();
     fields.facesVisible = stats.facesVisible;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/UpAxis.h"
 #include "raster/RenderOptions.h"
 #include "shade/ColourMode.h"
 
@@ -17,6 +18,9 @@ struct ViewerOptions {
   ColourMode colour = ColourMode::kAuto;
   RenderOptions render;
   std::optional<GlyphMode> glyphs;  ///< unset: PickGlyphMode for the terminal
+  std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
+  double theta = 0.3;            ///< the view `r` returns to, radians (SPEC 2)
+  double phi = 1.3;
 };
 
 /// Runs the full-screen viewer until the user quits; returns the exit code.

@@ -36,6 +36,8 @@ ViewerAction ActionForChar(int ascii) {
       return ViewerAction::kToggleTurntable;
     case 'b':
       return ViewerAction::kToggleCulling;
+    case 'u':
+      return ViewerAction::kCycleUpAxis;
     case 'o':
       return ViewerAction::kOpenFile;
     case 'n':

@@ -20,6 +20,7 @@ enum class ViewerAction {
   kToggleLightMode,
   kToggleTurntable,
   kToggleCulling,
+  kCycleUpAxis,
   kOpenFile,
   kNextModel,
   kPreviousModel,

@@ -26,10 +26,11 @@ Loaded<Mesh> LoadViewerMesh(const std::string& path, const LoadOptions& options)
                       : LoadModelFile(path, options);
 }
 
-Loaded<Scene> LoadViewerScene(const std::string& path, const LoadOptions& options) {
+Loaded<Scene> LoadViewerScene(const std::string& path, const LoadOptions& options,
+                              std::optional<UpAxis> upAxis) {
   Loaded<Mesh> mesh = LoadViewerMesh(path, options);
   if (!mesh.Ok()) return mesh.Error();
-  return PrepareScene(std::move(mesh.Value()));
+  return PrepareScene(std::move(mesh.Value()), upAxis);
 }
 
 ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
@@ -38,7 +39,10 @@ ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
       colourMode_(options.colour == ColourMode::kNone || options.colour == ColourMode::kAuto
                       ? ColourMode::k256
                       : options.colour),
-      colourOn_(options.colour != ColourMode::kNone && options.colour != ColourMode::kAuto) {
+      colourOn_(options.colour != ColourMode::kNone && options.colour != ColourMode::kAuto),
+      upAxis_(options.upAxis),
+      startTheta_(options.theta),
+      startPhi_(options.phi) {
   render_.keepDepth = false;  // the screen shows glyphs only
   if (paths_.empty()) paths_.emplace_back();
   cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
@@ -103,7 +107,7 @@ void ViewerState::OpenPath(const std::string& path) {
 
 void ViewerState::RunPendingLoad() {
   if (const std::optional<LoadRequest> request = TakeLoadRequest()) {
-    FinishLoad(*request, LoadViewerScene(request->path));
+    FinishLoad(*request, LoadViewerScene(request->path, {}, upAxis_));
   }
 }
 
@@ -118,6 +122,8 @@ void ViewerState::StepTo(size_t index) {
 
 void ViewerState::ResetView() {
   view_ = DefaultView(scene_.diagonalModelUnits);
+  view_.theta = startTheta_;
+  view_.phi = startPhi_;
   fitRho_ = view_.rho;
   sunAzimuth_ = sunElevation_ = 0.0;
   render_.sunEye = SunFromAngles(0.0, 0.0);
@@ -137,6 +143,14 @@ void ViewerState::Orbit(double dTheta, double dPhi) {
 void ViewerState::ChangeDistance(double factor) {
   const ViewLimits limits = LimitsForDiagonal(scene_.diagonalModelUnits);
   view_.rho = std::clamp(view_.rho * factor, limits.rhoMin, limits.rhoMax);
+}
+
+// The next axis of the cycle, for this model only; the view stays (turning
+// by an axis permutation keeps the bounding box's diagonal, so the fit too).
+void ViewerState::CycleUpAxis() {
+  const UpAxis next = NextUpAxis(scene_.upAxis);
+  scene_ = PrepareScene(std::move(scene_.mesh), next);
+  message_ = "up axis " + std::string(UpAxisName(next));
 }
 
 void ViewerState::Apply(ViewerAction action) {
@@ -195,6 +209,9 @@ void ViewerState::Apply(ViewerAction action) {
       break;
     case ViewerAction::kToggleCulling:
       render_.cullBackFaces = !render_.cullBackFaces;
+      break;
+    case ViewerAction::kCycleUpAxis:
+      CycleUpAxis();
       break;
     case ViewerAction::kOpenFile:
       break;  // the event loop owns the prompt

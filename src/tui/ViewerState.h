@@ -16,8 +16,9 @@ namespace termshade {
 
 /// Reads a model file, or the embedded demo scene for an empty path.
 Loaded<Mesh> LoadViewerMesh(const std::string& path, const LoadOptions& options = {});
-/// LoadViewerMesh, then PrepareScene.
-Loaded<Scene> LoadViewerScene(const std::string& path, const LoadOptions& options = {});
+/// LoadViewerMesh, then PrepareScene with the up axis when given, else the file's own.
+Loaded<Scene> LoadViewerScene(const std::string& path, const LoadOptions& options = {},
+                              std::optional<UpAxis> upAxis = {});
 
 /// A model the viewer wants loaded (the event loop loads it on a worker).
 struct LoadRequest {
@@ -70,6 +71,8 @@ class ViewerState {
   double CellAspect() const { return cellAspect_; }
   std::string ModelLabel() const;
   size_t ModelCount() const { return paths_.size(); }
+  /// The viewer's --up for models it loads; unset: each file's own.
+  std::optional<UpAxis> UpAxisOverride() const { return upAxis_; }
   /// The colour mode cells are drawn in now (kNone after `c` turned it off).
   ColourMode Colour() const { return colourOn_ ? colourMode_ : ColourMode::kNone; }
   /// The glyph mode, and whether the terminal's locale can show the modes beyond ASCII.
@@ -93,6 +96,8 @@ class ViewerState {
   void ResetView();
   void Orbit(double dTheta, double dPhi);
   void ChangeDistance(double factor);
+  void CycleUpAxis();
+
 
   std::vector<std::string> paths_;  ///< "" is the demo scene
   size_t current_ = 0;
@@ -109,6 +114,9 @@ class ViewerState {
   ColourMode colourMode_ = ColourMode::k256;  ///< what `c` turns on
   bool colourOn_ = true;
   bool utf8_ = true;
+  std::optional<UpAxis> upAxis_;
+  double startTheta_ = 0.3;
+  double startPhi_ = 1.3;
   bool lightMode_ = false;
   bool turntable_ = false;
   bool help_ = false;

@@ -41,7 +41,7 @@ expect help_lists_render grep -q "render" "$work/out"
 check version 0 "" -- "$bin" --version
 expect version_names_the_program grep -qE '^termshade [0-9]+\.[0-9]+\.[0-9]+$' "$work/out"
 check render_help 0 "" -- "$bin" render --help
-for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --glyphs --format --frames --step --output --no-cull --color --mono; do
+for option in --size --cell-aspect --theta --phi --rho --method --shade --ramp --glyphs --format --frames --step --output --no-cull --color --mono --up --reader; do
   expect "render_help_documents_$option" grep -q -- "$option" "$work/out"
 done
 check turntable 0 "" -- "$bin" render "$src/data/cube.dat" --frames 3 --step 0.5 --size 20x10
@@ -102,6 +102,51 @@ check bench_load 0 "" -- "$bin" bench load --triangles 2000 --formats stl --repe
 expect bench_load_reports_a_row grep -q '^| 2k triangles, stl | auto |' "$work/out"
 expect bench_load_reports_assimp grep -q '^| 2k triangles, stl | assimp |' "$work/out"
 check obj_import 0 "" -- "$bin" render "$src/tests/models/good/quad_and_triangle.obj" --size 20x8
+
+# Several models: each model's frames in turn, one after another.
+check two_models 0 "" -- "$bin" render "$src/data/cube.dat" "$src/data/wedge.dat" --size 30x10
+"$bin" render "$src/data/cube.dat" --size 30x10 >"$work/cube"
+"$bin" render "$src/data/wedge.dat" --size 30x10 >>"$work/cube"
+expect two_models_are_each_in_turn cmp -s "$work/out" "$work/cube"
+check two_models_turntable 0 "" -- "$bin" render "$src/data/cube.dat" "$src/data/wedge.dat" --size 30x10 --frames 2
+expect two_models_two_frames_each test "$(wc -l <"$work/out")" -eq 40
+check one_model_bad 1 "nope.dat: cannot open" -- "$bin" render "$work/nope.dat" "$src/data/wedge.dat" --size 30x10
+expect the_good_model_is_still_drawn test "$(wc -l <"$work/out")" -eq 10
+check bad_model_with_output 1 "nope.dat: cannot open" -- "$bin" render "$work/nope.dat" -o "$work/none.txt"
+expect bad_model_leaves_no_output_file test ! -e "$work/none.txt"
+
+# Angles: radians, or degrees with a deg suffix.
+"$bin" render "$src/data/steps.dat" --theta 0.5235987755982988 --phi 1.0471975511965976 --size 40x12 >"$work/radians"
+check theta_in_degrees 0 "" -- "$bin" render "$src/data/steps.dat" --theta 30deg --phi 60deg --size 40x12
+expect degrees_equal_radians cmp -s "$work/out" "$work/radians"
+"$bin" render "$src/data/steps.dat" --frames 2 --step 0.5235987755982988 --size 40x12 >"$work/radians"
+check step_in_degrees 0 "" -- "$bin" render "$src/data/steps.dat" --frames 2 --step 30deg --size 40x12
+expect step_degrees_equal_radians cmp -s "$work/out" "$work/radians"
+check bad_angle 2 "--theta" -- "$bin" render "$src/data/cube.dat" --theta 30dg
+check bad_angle_phi 2 "--phi" -- "$bin" render "$src/data/cube.dat" --phi deg
+check viewer_bad_angle 2 "--theta" -- "$bin" --theta north
+
+# Up axis: --up overrides the file's; a y-up reading of a z-up file differs.
+check up_override 0 "" -- "$bin" render "$src/data/steps.dat" --up y --size 40x12
+"$bin" render "$src/data/steps.dat" --size 40x12 >"$work/zup"
+expect up_override_turns_the_model bash -c "! cmp -s '$work/out' '$work/zup'"
+check up_z_is_the_dat_default 0 "" -- "$bin" render "$src/data/steps.dat" --up z --size 40x12
+expect up_z_equals_default cmp -s "$work/out" "$work/zup"
+check bad_up 2 "--up" -- "$bin" render "$src/data/cube.dat" --up w
+check viewer_bad_up 2 "--up" -- "$bin" --up sideways
+
+# Without --size: the terminal's size (one row less) when stdout is a terminal.
+check terminal_size 0 "" -- script -qec "stty cols 100 rows 30; '$bin' render '$src/data/cube.dat'" "$work/typescript"
+expect terminal_size_is_used test "$(tr -d '\r' <"$work/typescript" | awk 'length($0) == 100' | wc -l)" -eq 29
+check terminal_size_not_for_output_file 0 "" -- script -qec "stty cols 100 rows 30; '$bin' render '$src/data/cube.dat' -o '$work/frame100.txt'" "$work/typescript"
+expect output_file_is_80x24 test "$(awk 'length($0) == 80' "$work/frame100.txt" | wc -l)" -eq 24
+
+# bench models: one tab-separated row per file, the up axis and outward turn as prepared.
+check bench_models 0 "" -- "$bin" bench models "$src/tests/models/real/wuson_inside_out.off" "$src/data/cube.dat" --up z
+expect bench_models_rows test "$(wc -l <"$work/out")" -eq 3
+expect bench_models_turns_wuson_outward awk -F'\t' '$1 ~ /wuson/ && $2 == "yes" && $6 == "+z" && $7 > 3000 {found = 1} END {exit !found}' "$work/out"
+check bench_models_bad_file 1 "" -- "$bin" bench models "$work/nope.dat"
+expect bench_models_says_why grep -q "cannot open" "$work/out"
 
 # Bad input: exit 1 with file:line:col.
 check missing_file 1 "nope.dat: cannot open: No such file or directory" -- "$bin" render "$work/nope.dat"

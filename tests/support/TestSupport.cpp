@@ -23,13 +23,17 @@ std::string ReadFile(const std::string& path) {
   return text.str();
 }
 
-Scene LoadScene(const std::string& relative) {
+Mesh LoadMesh(const std::string& relative) {
   Loaded<Mesh> mesh = LoadModelFile(SourcePath(relative));
   if (!mesh.Ok()) {
     ADD_FAILURE() << mesh.Error().ToString();
-    return PrepareScene(Mesh{});
+    return Mesh{};
   }
-  return PrepareScene(std::move(mesh.Value()));
+  return std::move(mesh.Value());
+}
+
+Scene LoadScene(const std::string& relative) {
+  return PrepareScene(LoadMesh(relative));
 }
 
 std::string Frame::Text() const {

@@ -16,6 +16,9 @@ std::string SourcePath(const std::string& relative);
 /// Reads a whole file (empty string if it cannot be read).
 std::string ReadFile(const std::string& path);
 
+/// Loads a model from the source tree; fails the test on error (then an empty mesh).
+Mesh LoadMesh(const std::string& relative);
+
 /// Loads and prepares a model from the source tree; fails the test on error.
 Scene LoadScene(const std::string& relative);
 

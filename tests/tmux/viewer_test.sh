@@ -381,6 +381,26 @@ frame_matches_render next_after_failed_model 24 "$src/data/beams.dat" --size 80x
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 
+# 12b. The up axis: --up and degrees as render takes them; u cycles the axis
+# (+z +y +x ...), keeps the view, and says so on the status line.
+spider="$src/tests/models/real/spider_z_up_binary.stl"
+run "clear; $bin --theta 20deg $spider"
+wait_for 'spider_z_up_binary.stl' 5 >/dev/null || fail "z-up STL did not open"
+frame_matches_render viewer_degrees_match_render 24 "$spider" --size 80x24 --theta 20deg
+tm send-keys -t v Right u
+wait_for 'up axis \+y' 5 >/dev/null && pass || fail "u did not turn the up axis to +y"
+turned_theta=$(python3 -c 'import math; print(repr(20 * (math.pi / 180) + 0.1))')
+frame_matches_render u_key_matches_render_up 24 "$spider" --size 80x24 --theta "$turned_theta" --up y
+tm send-keys -t v u
+wait_for 'up axis \+x' 5 >/dev/null && pass || fail "u did not cycle on to +x"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+run "clear; $bin --up -y $spider"
+wait_for 'spider_z_up_binary.stl' 5 >/dev/null || fail "--up -y did not open"
+frame_matches_render viewer_up_option_matches_render 24 "$spider" --size 80x24 --up -y
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
 # 13. The same first screen in a UTF-8 locale as in the C locale.
 run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8"
