@@ -7,12 +7,10 @@
 #include <fstream>
 
 #include "geometry/DropUnusedVertices.h"
-#include "geometry/FitCamera.h"
-#include "io/FrameFormats.h"
 #include "io/MeshExport.h"
 #include "io/ModelLoader.h"
 #include "io/SceneGenerators.h"
-#include "raster/Renderer.h"
+#include "support/TestSupport.h"
 
 namespace termshade {
 namespace {
@@ -87,25 +85,11 @@ TEST(ObjReader, DrawsWhatTheImporterDraws) {
     const std::string path = ::testing::TempDir() + "obj_reader_parity.obj";
     const std::string text = ExportMesh(GenerateScene(scene).value(), ExportFormat::kObj);
     std::ofstream(path, std::ios::binary) << text;
-    auto frameOf = [](Mesh mesh) {
-      mesh.upAxisFile = UpAxis::kPlusZ;
-      const Scene prepared = PrepareScene(std::move(mesh));
-      const Camera camera =
-          FitCamera(prepared, DefaultView(prepared.diagonalModelUnits), 80, 24, 2.0);
-      Renderer renderer;
-      DepthBuffer depth;
-      depth.Resize(80, 24);
-      CellBuffer cells(80, 24);
-      renderer.Render(prepared, camera, RenderOptions{}, depth, cells);
-      std::string frame;
-      AppendTextFrame(cells, frame);
-      return frame;
-    };
     LoadOptions reference;
     reference.importerOnly = true;
     Loaded<Mesh> imported = LoadModelFile(path, reference);
     ASSERT_TRUE(imported.Ok()) << imported.Error().ToString();
-    EXPECT_EQ(frameOf(ReadOk(text)), frameOf(imported.Value())) << scene;
+    EXPECT_EQ(test::FrameText(ReadOk(text)), test::FrameText(imported.Value())) << scene;
     std::remove(path.c_str());
   }
 }

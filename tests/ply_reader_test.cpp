@@ -7,12 +7,10 @@
 #include <cstring>
 #include <fstream>
 
-#include "geometry/FitCamera.h"
-#include "io/FrameFormats.h"
 #include "io/MeshExport.h"
 #include "io/ModelLoader.h"
 #include "io/SceneGenerators.h"
-#include "raster/Renderer.h"
+#include "support/TestSupport.h"
 
 namespace termshade {
 namespace {
@@ -137,24 +135,11 @@ TEST(PlyReader, DrawsWhatTheImporterDraws) {
   const std::string path = ::testing::TempDir() + "ply_reader_parity.ply";
   const std::string bytes = ExportMesh(GenerateScene("sphere_cone").value(), ExportFormat::kPly);
   std::ofstream(path, std::ios::binary) << bytes;
-  auto frameOf = [](Mesh mesh) {
-    mesh.upAxisFile = UpAxis::kPlusZ;
-    const Scene scene = PrepareScene(std::move(mesh));
-    const Camera camera = FitCamera(scene, DefaultView(scene.diagonalModelUnits), 80, 24, 2.0);
-    Renderer renderer;
-    DepthBuffer depth;
-    depth.Resize(80, 24);
-    CellBuffer cells(80, 24);
-    renderer.Render(scene, camera, RenderOptions{}, depth, cells);
-    std::string text;
-    AppendTextFrame(cells, text);
-    return text;
-  };
   LoadOptions reference;
   reference.importerOnly = true;
   Loaded<Mesh> imported = LoadModelFile(path, reference);
   ASSERT_TRUE(imported.Ok()) << imported.Error().ToString();
-  EXPECT_EQ(frameOf(ReadOk(bytes)), frameOf(imported.Value()));
+  EXPECT_EQ(test::FrameText(ReadOk(bytes)), test::FrameText(imported.Value()));
   std::remove(path.c_str());
 }
 

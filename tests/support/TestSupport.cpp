@@ -57,4 +57,10 @@ Frame RenderFrame(const Scene& scene, double theta, double phi, int widthCells, 
   return frame;
 }
 
+std::string FrameText(Mesh mesh) {
+  mesh.upAxisFile = UpAxis::kPlusZ;
+  const Scene scene = PrepareScene(std::move(mesh));
+  return RenderFrame(scene, 0.3, 1.3, 80, 24, RenderOptions{}).Text();
+}
+
 }  // namespace termshade::test

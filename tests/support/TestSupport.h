@@ -30,6 +30,9 @@ struct Frame {
   std::string Text() const;
 };
 
+/// The default 80x24 text frame of a mesh taken as z-up, for comparing two readings of one file.
+std::string FrameText(Mesh mesh);
+
 /// Renders a scene as `termshade render` would (default distance when rho <= 0).
 Frame RenderFrame(const Scene& scene, double theta, double phi, int widthCells, int heightCells,
                   const RenderOptions& options, double rho = 0.0, double cellAspect = 2.0);
