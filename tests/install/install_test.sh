@@ -72,7 +72,9 @@ complete_bash() {  # complete_bash DIR WORD... (the last word is being completed
                          printf "%s\n" "${COMPREPLY[@]}"' _ "$bash_completion" "$@")
 }
 expect "bash: render --me offers --method" \
-  test "$(complete_bash / termshade render --me)" = "--method"
+  grep -qx -- "--method" <<<"$(complete_bash / termshade render --me)"
+expect "bash: render --meth offers --method alone" \
+  test "$(complete_bash / termshade render --meth)" = "--method"
 expect "bash: --method offers its values" \
   test "$(complete_bash / termshade render m.obj --method "" | tr '\n' ' ')" = "zbuffer painter cull wire auto "
 expect "bash: --method=w" test "$(complete_bash / termshade --method = w)" = "wire"
@@ -95,7 +97,10 @@ if command -v fish >/dev/null; then
   complete_fish() {
     (cd "$1" && fish -c 'source $argv[1]; complete -C $argv[2]' "$fish_completion" "$2" | cut -f1)
   }
-  expect "fish: render --me offers --method" test "$(complete_fish / 'termshade render --me')" = "--method"
+  expect "fish: render --me offers --method" \
+    grep -qx -- "--method" <<<"$(complete_fish / 'termshade render --me')"
+  expect "fish: render --meth offers --method alone" \
+    test "$(complete_fish / 'termshade render --meth')" = "--method"
   expect "fish: model files by extension" \
     test "$(complete_fish "$src/data" 'termshade render sphere')" = "sphere_cone.dat"
 else
