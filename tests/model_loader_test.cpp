@@ -66,6 +66,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"raw_null_child_node_with_texture.raw", "nullptr"},
         BadModel{"ply_face_index_out_of_range.ply", ":13: face 0 names vertex 7 (the file has 3"},
         BadModel{"ply_face_index_negative.ply", ":13: face 0 names vertex -1"},
+        BadModel{"off_counts_with_trailing_junk.off",
+                 "the header promises 900000000 vertices and 90000000 faces"},
         BadModel{"ply_header_claims_2e9_vertices.ply",
                  "the header promises 2000000000 vertex, 1 face, more than the 27 bytes"},
         BadModel{"off_counts_beyond_file_size.off", "the header promises 353535235358 vertices"},

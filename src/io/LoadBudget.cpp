@@ -47,12 +47,14 @@ class Tokens {
   size_t pos_ = 0;
 };
 
-// A count as written in a header: digits with an optional sign; nullopt if not a number.
+// A count as an importer reads it from a header: the number the token
+// begins with ("900./x" is 900, as Assimp's atoi-like parsers take it);
+// nullopt when it begins with none.
 std::optional<double> Count(std::string_view token) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   double value = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (ec != std::errc() || end != token.data() + token.size()) return std::nullopt;
+  if (ec != std::errc() || end == token.data()) return std::nullopt;
   return value;
 }
 
