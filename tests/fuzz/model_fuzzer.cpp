@@ -1,14 +1,13 @@
 // libFuzzer target: any bytes through the model loader's Assimp path (our
 // confined IOSystem, header-count checks, budget, content sniffing) as OBJ,
 // PLY, STL, OFF, glTF, GLB, COLLADA or unnamed content (the first byte picks),
-// and whatever loads through PrepareScene and one render.
+// and whatever loads through the whole pipeline (FuzzPipeline.h).
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
-#include "geometry/FitCamera.h"
+#include "FuzzPipeline.h"
 #include "io/ModelLoader.h"
-#include "raster/Renderer.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace termshade;
@@ -20,18 +19,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   options.memoryBudgetBytes = size_t{256} << 20;  // within libFuzzer's -rss_limit_mb
   Loaded<Mesh> mesh =
       LoadModelBytes(std::string(reinterpret_cast<const char*>(data) + 1, size - 1), name, options);
-  if (!mesh.Ok()) {
-    (void)mesh.Error().ToString();
-    return 0;
-  }
-  if (mesh.Value().faceCorners.size() > 20000) return 0;  // keep each run fast
-  const Scene scene = PrepareScene(std::move(mesh.Value()));
-  Renderer renderer;
-  CellBuffer cells(23, 11);
-  DepthBuffer depth;
-  depth.Resize(23, 11);
-  RenderOptions renderOptions;
-  renderer.Render(scene, FitCamera(scene, DefaultView(scene.diagonalModelUnits), 23, 11, 2.0),
-                  renderOptions, depth, cells);
-  return 0;
+  return DrawEveryMethod(mesh);
 }
