@@ -75,42 +75,48 @@ SamplePattern BrighterHalf(const CellSamples& s) {
   return ink;
 }
 
-void SetTone(const Tone& tone, const ShadeRamp& ramp, uint32_t& face, int16_t& level,
-             uint8_t& intensity) {
+void SetTone(const Tone& tone, const std::array<int16_t, 256>& levelOf, uint32_t& face,
+             int16_t& level, uint8_t& intensity) {
   face = tone.face;
   intensity = tone.intensity;
-  level =
-      tone.face == 0 ? int16_t{-1} : static_cast<int16_t>(ramp.LevelFor(tone.intensity / 255.0));
+  level = tone.face == 0 ? int16_t{-1} : levelOf[tone.intensity];
 }
 
 }  // namespace
 
-void GlyphStage::Compose(const CellBuffer& samples, const DepthBuffer& sampleDepth, SampleGrid grid,
-                         const RenderOptions& options, CellBuffer& cells, DepthBuffer& depth) {
+void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+                         DepthBuffer& depth) {
   cells.Clear();
   depth.Clear();
-  const int k = grid.across, m = grid.down;
+  const int k = in.grid.across, m = in.grid.down;
   const GlyphMode mode = options.glyphs;
-  if (mode == GlyphMode::kAscii) ascii_.Prepare(grid);
+  if (mode == GlyphMode::kAscii) ascii_.Prepare(in.grid);
   const SamplePattern all =
-      grid.Count() >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << grid.Count()) - 1;
-  const auto& sampleFaces = samples.FaceNumbers();
-  const auto& sampleValues = samples.Intensities();
+      in.grid.Count() >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << in.grid.Count()) - 1;
+  // The ramp level of each intensity, once a frame.
+  std::array<int16_t, 256> levelOf{};
+  for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
+  const uint32_t* const sampleFaces = in.faces.FaceNumbers().data();
+  const uint8_t* const faceIntensity = in.faceIntensities.data();
   CellSamples s;
-  s.count = grid.Count();
+  s.count = in.grid.Count();
   for (int row = 0; row < cells.HeightCells(); ++row) {
     for (int col = 0; col < cells.WidthCells(); ++col) {
-      // Step 1: the cell's samples, and the nearest depth among them.
+      // Step 1: the cell's samples, whether they all show one face, and the nearest depth.
       s.covered = 0;
+      const uint32_t firstFace = sampleFaces[in.faces.Index(col * k, row * m)];
+      bool oneFace = true;
       float nearest = 0.0F;
       for (int j = 0; j < m; ++j) {
-        const size_t rowStart = samples.Index(col * k, row * m + j);
+        const size_t rowStart = in.faces.Index(col * k, row * m + j);
         for (int i = 0; i < k; ++i) {
           const int n = j * k + i;
-          s.faces[n] = sampleFaces[rowStart + i];
-          s.values[n] = s.faces[n] == 0 ? 0 : sampleValues[rowStart + i];
-          if (s.faces[n] != 0) s.covered |= SamplePattern{1} << n;
-          nearest = std::max(nearest, sampleDepth.At(rowStart + i));
+          const uint32_t face = sampleFaces[rowStart + i];
+          s.faces[n] = face;
+          s.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
+          s.covered |= face != 0 ? SamplePattern{1} << n : 0;
+          oneFace = oneFace && face == firstFace;
+          if (in.writeDepth) nearest = std::max(nearest, in.depth.At(rowStart + i));
         }
       }
       if (s.covered == 0) continue;
@@ -121,34 +127,39 @@ void GlyphStage::Compose(const CellBuffer& samples, const DepthBuffer& sampleDep
       char32_t glyph = U' ';
       switch (mode) {
         case GlyphMode::kRamp: {
-          fore = ToneOf(s, all);
+          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
           glyph = options.ramp.Glyph(options.ramp.LevelFor(fore.intensity / 255.0));
           break;
         }
         case GlyphMode::kAscii: {
-          fore = ToneOf(s, s.covered);
+          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
           glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
                                     : ascii_.MatchInk(s.values.data(), s.covered);
           break;
         }
         case GlyphMode::kBraille:
-          fore = ToneOf(s, s.covered);
+          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
           glyph = PatternGlyph(mode, s.covered);
           break;
         default:  // blocks, quadrants, sextants
-          if (options.twoColour) ink = BrighterHalf(s);
-          if (ink == 0) ink = all;  // one tone: a full block
-          fore = ToneOf(s, ink);
-          if (options.twoColour) back = ToneOf(s, all & ~ink);
+          if (oneFace) {  // one tone: a full block
+            ink = all;
+            fore = {firstFace, s.values[0]};
+          } else {
+            if (options.twoColour) ink = BrighterHalf(s);
+            if (ink == 0) ink = all;
+            fore = ToneOf(s, ink);
+            if (options.twoColour) back = ToneOf(s, all & ~ink);
+          }
           glyph = PatternGlyph(mode, ink);
           break;
       }
       cells.Glyphs()[index] = glyph;
-      SetTone(fore, options.ramp, cells.FaceNumbers()[index], cells.Levels()[index],
+      SetTone(fore, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
               cells.Intensities()[index]);
-      SetTone(back, options.ramp, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
+      SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
               cells.BackIntensities()[index]);
-      depth.At(index) = nearest;
+      if (in.writeDepth) depth.At(index) = nearest;
     }
   }
 }

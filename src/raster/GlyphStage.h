@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
@@ -15,8 +16,18 @@ namespace termshade {
 /// Keeps the ascii matcher's cache between frames.
 class GlyphStage {
  public:
-  void Compose(const CellBuffer& samples, const DepthBuffer& sampleDepth, SampleGrid grid,
-               const RenderOptions& options, CellBuffer& cells, DepthBuffer& depth);
+  /// A frame of samples: faces per sample, the intensity (0..255) of each
+  /// face seen (indexed by face number - 1), and whether depth is to be kept
+  /// (then the cell's depth is its nearest sample's).
+  struct Samples {
+    const CellBuffer& faces;
+    const DepthBuffer& depth;
+    std::span<const uint8_t> faceIntensities;
+    SampleGrid grid;
+    bool writeDepth = true;
+  };
+  void Compose(const Samples& samples, const RenderOptions& options, CellBuffer& cells,
+               DepthBuffer& depth);
 
  private:
   AsciiMatcher ascii_;
