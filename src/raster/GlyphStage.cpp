@@ -25,13 +25,12 @@ struct Tone {
   uint8_t intensity = 0;
 };
 
-Tone ToneOf(const CellSamples& s, SamplePattern members) {
+// The face most members show (lower number on a tie).
+uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
   uint32_t bestFace = 0;
-  int bestCount = 0, memberCount = 0, sum = 0;
+  int bestCount = 0;
   for (int i = 0; i < s.count; ++i) {
     if (!((members >> i) & 1U)) continue;
-    ++memberCount;
-    sum += s.values[i];
     const uint32_t face = s.faces[i];
     if (face == 0) continue;
     int count = 0;
@@ -41,8 +40,27 @@ Tone ToneOf(const CellSamples& s, SamplePattern members) {
       bestCount = count;
     }
   }
+  return bestFace;
+}
+
+Tone ToneOf(const CellSamples& s, SamplePattern members) {
+  // Usually the members show one face (and perhaps background): no counting.
+  uint32_t onlyFace = 0;
+  bool oneFace = true;
+  int memberCount = 0, sum = 0;
+  for (int i = 0; i < s.count; ++i) {
+    if (!((members >> i) & 1U)) continue;
+    ++memberCount;
+    sum += s.values[i];
+    const uint32_t face = s.faces[i];
+    if (face == 0) continue;
+    oneFace = oneFace && (onlyFace == 0 || face == onlyFace);
+    onlyFace = face;
+  }
   if (memberCount == 0) return {};
-  return {bestFace, static_cast<uint8_t>((sum + memberCount / 2) / memberCount)};
+  const auto mean = static_cast<uint8_t>((sum + memberCount / 2) / memberCount);
+  if (oneFace) return {onlyFace, mean};
+  return {MajorityFace(s, members), mean};
 }
 
 // The best two-tone split of grey values (least squared error): a threshold
@@ -88,38 +106,56 @@ void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBu
                          DepthBuffer& depth) {
   cells.Clear();
   depth.Clear();
-  const int k = in.grid.across, m = in.grid.down;
+  if (options.glyphs == GlyphMode::kAscii) ascii_.Prepare(in.grid);
+  // The mode's own grids with their sizes known to the compiler; any other (forced) at run time.
+  const SampleGrid g = in.grid;
+  if (g == SampleGrid{1, 2}) return ComposeGrid<1, 2>(in, options, cells, depth);
+  if (g == SampleGrid{2, 2}) return ComposeGrid<2, 2>(in, options, cells, depth);
+  if (g == SampleGrid{2, 3}) return ComposeGrid<2, 3>(in, options, cells, depth);
+  if (g == SampleGrid{2, 4}) return ComposeGrid<2, 4>(in, options, cells, depth);
+  ComposeGrid<0, 0>(in, options, cells, depth);
+}
+
+template <int kAcross, int kDown>
+void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+                             DepthBuffer& depth) {
+  const int k = kAcross > 0 ? kAcross : in.grid.across;
+  const int m = kDown > 0 ? kDown : in.grid.down;
   const GlyphMode mode = options.glyphs;
-  if (mode == GlyphMode::kAscii) ascii_.Prepare(in.grid);
-  const SamplePattern all =
-      in.grid.Count() >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << in.grid.Count()) - 1;
+  const SamplePattern all = k * m >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << (k * m)) - 1;
   // The ramp level of each intensity, once a frame.
   std::array<int16_t, 256> levelOf{};
   for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
   const uint32_t* const sampleFaces = in.faces.FaceNumbers().data();
   const uint8_t* const faceIntensity = in.faceIntensities.data();
+  const size_t stride = static_cast<size_t>(in.faces.WidthCells());
   CellSamples s;
-  s.count = in.grid.Count();
+  s.count = k * m;
   for (int row = 0; row < cells.HeightCells(); ++row) {
+    const size_t rowStart = in.faces.Index(0, row * m);
     for (int col = 0; col < cells.WidthCells(); ++col) {
       // Step 1: the cell's samples, whether they all show one face, and the nearest depth.
-      s.covered = 0;
-      const uint32_t firstFace = sampleFaces[in.faces.Index(col * k, row * m)];
+      const size_t cellStart = rowStart + static_cast<size_t>(col) * k;
+      const uint32_t firstFace = sampleFaces[cellStart];
       bool oneFace = true;
-      float nearest = 0.0F;
       for (int j = 0; j < m; ++j) {
-        const size_t rowStart = in.faces.Index(col * k, row * m + j);
         for (int i = 0; i < k; ++i) {
-          const int n = j * k + i;
-          const uint32_t face = sampleFaces[rowStart + i];
-          s.faces[n] = face;
-          s.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
-          s.covered |= face != 0 ? SamplePattern{1} << n : 0;
+          const uint32_t face = sampleFaces[cellStart + j * stride + i];
+          s.faces[j * k + i] = face;
           oneFace = oneFace && face == firstFace;
-          if (in.writeDepth) nearest = std::max(nearest, in.depth.At(rowStart + i));
         }
       }
-      if (s.covered == 0) continue;
+      if (oneFace && firstFace == 0) continue;  // background
+      s.covered = 0;
+      float nearest = 0.0F;
+      for (int n = 0; n < k * m; ++n) {
+        const uint32_t face = s.faces[n];
+        s.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
+        s.covered |= face != 0 ? SamplePattern{1} << n : 0;
+        if (in.writeDepth) {
+          nearest = std::max(nearest, in.depth.At(cellStart + (n / k) * stride + n % k));
+        }
+      }
       // Step 2: the glyph and its colours.
       const size_t index = cells.Index(col, row);
       SamplePattern ink = s.covered;
@@ -128,7 +164,7 @@ void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBu
       switch (mode) {
         case GlyphMode::kRamp: {
           fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
-          glyph = options.ramp.Glyph(options.ramp.LevelFor(fore.intensity / 255.0));
+          glyph = options.ramp.Glyph(levelOf[fore.intensity]);
           break;
         }
         case GlyphMode::kAscii: {

@@ -30,6 +30,10 @@ class GlyphStage {
                DepthBuffer& depth);
 
  private:
+  template <int kAcross, int kDown>  // 0: the grid's size at run time
+  void ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+                   DepthBuffer& depth);
+
   AsciiMatcher ascii_;
 };
 
