@@ -25,19 +25,29 @@ struct Tone {
   uint8_t intensity = 0;
 };
 
-// The face most members show (lower number on a tie).
+// The face most members show (lower number on a tie): counts per distinct face.
 uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
+  std::array<uint32_t, kMaxSamples> distinct;  // NOLINT(cppcoreguidelines-pro-type-member-init)
+  std::array<int, kMaxSamples> counts;         // NOLINT(cppcoreguidelines-pro-type-member-init)
+  int distinctCount = 0;
+  for (int i = 0; i < s.count; ++i) {
+    const uint32_t face = s.faces[i];
+    if (!((members >> i) & 1U) || face == 0) continue;
+    int d = 0;
+    while (d < distinctCount && distinct[d] != face) ++d;
+    if (d == distinctCount) {
+      distinct[d] = face;
+      counts[d] = 0;
+      ++distinctCount;
+    }
+    ++counts[d];
+  }
   uint32_t bestFace = 0;
   int bestCount = 0;
-  for (int i = 0; i < s.count; ++i) {
-    if (!((members >> i) & 1U)) continue;
-    const uint32_t face = s.faces[i];
-    if (face == 0) continue;
-    int count = 0;
-    for (int j = 0; j < s.count; ++j) count += ((members >> j) & 1U) && s.faces[j] == face ? 1 : 0;
-    if (count > bestCount || (count == bestCount && face < bestFace)) {
-      bestFace = face;
-      bestCount = count;
+  for (int d = 0; d < distinctCount; ++d) {
+    if (counts[d] > bestCount || (counts[d] == bestCount && distinct[d] < bestFace)) {
+      bestFace = distinct[d];
+      bestCount = counts[d];
     }
   }
   return bestFace;

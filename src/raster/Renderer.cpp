@@ -237,7 +237,10 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
   faceLevels_.resize(scene.FaceCount(), -1);
   faceIntensities_.resize(scene.FaceCount(), 0);
   seenFaces_.clear();
+  uint32_t previous = 0;  // runs of one face look it up once
   for (uint32_t faceNumber : faces) {
+    if (faceNumber == previous) continue;
+    previous = faceNumber;
     if (faceNumber != 0 && faceLevels_[faceNumber - 1] == -1) {
       faceLevels_[faceNumber - 1] = 0;  // marked; restored to -1 below
       seenFaces_.push_back(faceNumber - 1);
