@@ -103,6 +103,32 @@ SamplePattern BrighterHalf(const CellSamples& s) {
   return ink;
 }
 
+// The samples of each part of the pattern grid, one value a part: the
+// parts' mean intensity (background 0) and the face most of its samples show.
+void ReduceToParts(const CellSamples& s, SampleGrid grid, SampleGrid pattern, CellSamples& parts) {
+  const int subAcross = grid.across / pattern.across, subDown = grid.down / pattern.down;
+  const int subCount = subAcross * subDown;
+  parts.count = pattern.Count();
+  parts.covered = 0;
+  for (int pj = 0; pj < pattern.down; ++pj) {
+    for (int pi = 0; pi < pattern.across; ++pi) {
+      SamplePattern members = 0;
+      int sum = 0;
+      for (int y = 0; y < subDown; ++y) {
+        for (int x = 0; x < subAcross; ++x) {
+          const int n = (pj * subDown + y) * grid.across + pi * subAcross + x;
+          members |= SamplePattern{1} << n;
+          sum += s.values[n];
+        }
+      }
+      const int p = pj * pattern.across + pi;
+      parts.faces[p] = (s.covered & members) != 0 ? MajorityFace(s, members) : 0;
+      parts.values[p] = static_cast<uint8_t>((sum + subCount / 2) / subCount);
+      if (parts.faces[p] != 0) parts.covered |= SamplePattern{1} << p;
+    }
+  }
+}
+
 void SetTone(const Tone& tone, const std::array<int16_t, 256>& levelOf, uint32_t& face,
              int16_t& level, uint8_t& intensity) {
   face = tone.face;
@@ -132,15 +158,18 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
   const int k = kAcross > 0 ? kAcross : in.grid.across;
   const int m = kDown > 0 ? kDown : in.grid.down;
   const GlyphMode mode = options.glyphs;
-  const SamplePattern all = k * m >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << (k * m)) - 1;
+  const int partCount = in.pattern.Count();
+  const bool reduce = !(in.pattern == in.grid);
+  const SamplePattern all =
+      partCount >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << partCount) - 1;
   // The ramp level of each intensity, once a frame.
   std::array<int16_t, 256> levelOf{};
   for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
   const uint32_t* const sampleFaces = in.faces.FaceNumbers().data();
   const uint8_t* const faceIntensity = in.faceIntensities.data();
   const size_t stride = static_cast<size_t>(in.faces.WidthCells());
-  CellSamples s;
-  s.count = k * m;
+  CellSamples fine, parts;
+  fine.count = k * m;
   for (int row = 0; row < cells.HeightCells(); ++row) {
     const size_t rowStart = in.faces.Index(0, row * m);
     for (int col = 0; col < cells.WidthCells(); ++col) {
@@ -151,21 +180,23 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
       for (int j = 0; j < m; ++j) {
         for (int i = 0; i < k; ++i) {
           const uint32_t face = sampleFaces[cellStart + j * stride + i];
-          s.faces[j * k + i] = face;
+          fine.faces[j * k + i] = face;
           oneFace = oneFace && face == firstFace;
         }
       }
       if (oneFace && firstFace == 0) continue;  // background
-      s.covered = 0;
+      fine.covered = 0;
       float nearest = 0.0F;
       for (int n = 0; n < k * m; ++n) {
-        const uint32_t face = s.faces[n];
-        s.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
-        s.covered |= face != 0 ? SamplePattern{1} << n : 0;
+        const uint32_t face = fine.faces[n];
+        fine.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
+        fine.covered |= face != 0 ? SamplePattern{1} << n : 0;
         if (in.writeDepth) {
           nearest = std::max(nearest, in.depth.At(cellStart + (n / k) * stride + n % k));
         }
       }
+      if (reduce) ReduceToParts(fine, in.grid, in.pattern, parts);
+      const CellSamples& s = reduce ? parts : fine;
       // Step 2: the glyph and its colours.
       const size_t index = cells.Index(col, row);
       SamplePattern ink = s.covered;

@@ -23,7 +23,8 @@ class GlyphStage {
     const CellBuffer& faces;
     const DepthBuffer& depth;
     std::span<const uint8_t> faceIntensities;
-    SampleGrid grid;
+    SampleGrid grid;     ///< samples a cell
+    SampleGrid pattern;  ///< the glyph's parts; grid is a multiple of it (SPEC 11 modes: equal)
     bool writeDepth = true;
   };
   void Compose(const Samples& samples, const RenderOptions& options, CellBuffer& cells,

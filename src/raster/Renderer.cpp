@@ -89,8 +89,9 @@ RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
   lastGrid_ = grid;
   const bool writeDepth =
       options.keepDepth || ResolvedMethod(scene, options.method) == Method::kZBuffer;
-  glyphStage_.Compose({fineCells_, fineDepth_, faceIntensities_, grid, writeDepth}, options, cells,
-                      depth);
+  glyphStage_.Compose(
+      {fineCells_, fineDepth_, faceIntensities_, grid, PatternSampleGrid(options), writeDepth},
+      options, cells, depth);
   return stats;
 }
 
