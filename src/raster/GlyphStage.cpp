@@ -114,15 +114,18 @@ void ReduceToParts(const CellSamples& s, SampleGrid grid, SampleGrid pattern, Ce
     for (int pi = 0; pi < pattern.across; ++pi) {
       SamplePattern members = 0;
       int sum = 0;
+      const uint32_t firstFace = s.faces[(pj * subDown) * grid.across + pi * subAcross];
+      bool oneFace = true;
       for (int y = 0; y < subDown; ++y) {
         for (int x = 0; x < subAcross; ++x) {
           const int n = (pj * subDown + y) * grid.across + pi * subAcross + x;
           members |= SamplePattern{1} << n;
           sum += s.values[n];
+          oneFace = oneFace && s.faces[n] == firstFace;
         }
       }
       const int p = pj * pattern.across + pi;
-      parts.faces[p] = (s.covered & members) != 0 ? MajorityFace(s, members) : 0;
+      parts.faces[p] = oneFace || (s.covered & members) == 0 ? firstFace : MajorityFace(s, members);
       parts.values[p] = static_cast<uint8_t>((sum + subCount / 2) / subCount);
       if (parts.faces[p] != 0) parts.covered |= SamplePattern{1} << p;
     }
