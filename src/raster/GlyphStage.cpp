@@ -221,7 +221,7 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
           fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
           glyph = PatternGlyph(mode, s.covered);
           break;
-        default:  // blocks, quadrants, sextants
+        default:          // blocks, quadrants, sextants
           if (oneFace) {  // one tone: a full block
             ink = all;
             fore = {firstFace, s.values[0]};

@@ -23,7 +23,8 @@ void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours,
         cell.colour = colours.ForFace(cells.FaceNumber(col, row), level);
         // Two-colour glyph modes (SPEC 11): the samples on the glyph's other side.
         const int backLevel = cells.BackLevel(col, row);
-        if (backLevel >= 0) cell.background = colours.ForFace(cells.BackFaceNumber(col, row), backLevel);
+        if (backLevel >= 0)
+          cell.background = colours.ForFace(cells.BackFaceNumber(col, row), backLevel);
       }
     }
   }
