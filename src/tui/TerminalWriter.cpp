@@ -140,7 +140,10 @@ void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int
       if (cursorRow != row || cursorCol != col) AppendMove(col, row);
       for (int c = col; c < end; ++c) {
         const ScreenCell& cell = grid.At(c, row);
-        AppendAttributes(AttributesFor(cell));
+        Attributes wanted = AttributesFor(cell);
+        // A full block hides its background: keep the current one rather than pay for a reset.
+        if (cell.glyph == U'\u2588') wanted.background = current_.background;
+        AppendAttributes(wanted);
         AppendUtf8(out_, cell.glyph);
       }
       cursorCol = end;
