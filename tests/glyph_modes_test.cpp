@@ -185,6 +185,43 @@ TEST(GlyphModes, TwoColourSplitInksTheBrighterSide) {
   }
 }
 
+// With colour, blocks sample each half 2 x 2 times and show each half's mean:
+// fg and bg are the means of the samples on either side of the glyph.
+TEST(GlyphModes, ColourBlocksShowEachHalfsMeanIntensity) {
+  const Scene scene = test::LoadScene("data/sphere_cone.dat");
+  constexpr int kCols = 60, kRows = 20;
+  const ModeFrame frame = RenderMode(scene, GlyphMode::kBlocks, kCols, kRows, 2.0, true);
+  ASSERT_EQ(frame.grid, (SampleGrid{2, 4}));
+  // Each sample's intensity: a one-sample frame on the sample grid.
+  CellBuffer fine(kCols * 2, kRows * 4);
+  DepthBuffer fineDepth;
+  fineDepth.Resize(kCols * 2, kRows * 4);
+  Renderer renderer;
+  renderer.Render(scene, SampleCamera(frame.camera, frame.grid), RenderOptions{}, fineDepth, fine);
+  int averaged = 0;
+  for (int row = 0; row < kRows; ++row) {
+    for (int col = 0; col < kCols; ++col) {
+      std::array<int, 2> sum{}, low{255, 255}, high{0, 0};
+      for (int n = 0; n < 8; ++n) {
+        const int x = col * 2 + n % 2, y = row * 4 + n / 2;
+        ASSERT_EQ(fine.FaceNumber(x, y), frame.samples.FaceNumber(x, y));
+        const int value = fine.FaceNumber(x, y) != 0 ? fine.Intensity(x, y) : 0;
+        sum[n / 4] += value;
+        low[n / 4] = std::min(low[n / 4], value);
+        high[n / 4] = std::max(high[n / 4], value);
+      }
+      const char32_t glyph = frame.cells.Glyph(col, row);
+      if (glyph != U'\u2580' && glyph != U'\u2584') continue;
+      const int ink = glyph == U'\u2580' ? 0 : 1;
+      const double inkMean = sum[ink] / 4.0, otherMean = sum[1 - ink] / 4.0;
+      EXPECT_NEAR(frame.cells.Intensity(col, row), inkMean, 0.5) << col << "," << row;
+      EXPECT_NEAR(frame.cells.BackIntensity(col, row), otherMean, 0.5) << col << "," << row;
+      averaged += low[ink] < high[ink] ? 1 : 0;
+    }
+  }
+  EXPECT_GT(averaged, 0) << "no half mixed two tones: the test shows nothing";
+}
+
 TEST(GlyphModes, JsonCarriesEachCellsSampleFaces) {
   const Scene scene = test::LoadScene("data/beams.dat");
   for (GlyphMode mode : {GlyphMode::kAscii, GlyphMode::kSextants}) {

@@ -9,6 +9,7 @@ namespace termshade {
 void CellBuffer::Resize(int widthCells, int heightCells) {
   widthCells_ = std::max(0, widthCells);
   heightCells_ = std::max(0, heightCells);
+  facesOnly_ = false;
   const size_t count = static_cast<size_t>(widthCells_) * heightCells_;
   glyphs_.resize(count);
   faceNumbers_.resize(count);
@@ -20,9 +21,24 @@ void CellBuffer::Resize(int widthCells, int heightCells) {
   Clear();
 }
 
+void CellBuffer::ResizeFacesOnly(int widthCells, int heightCells) {
+  widthCells_ = std::max(0, widthCells);
+  heightCells_ = std::max(0, heightCells);
+  facesOnly_ = true;
+  faceNumbers_.resize(static_cast<size_t>(widthCells_) * heightCells_);
+  glyphs_.clear();
+  levels_.clear();
+  intensities_.clear();
+  backFaceNumbers_.clear();
+  backLevels_.clear();
+  backIntensities_.clear();
+  Clear();
+}
+
 void CellBuffer::Clear() {
-  std::fill(glyphs_.begin(), glyphs_.end(), U' ');
   std::fill(faceNumbers_.begin(), faceNumbers_.end(), 0U);
+  if (facesOnly_) return;
+  std::fill(glyphs_.begin(), glyphs_.end(), U' ');
   std::fill(levels_.begin(), levels_.end(), int16_t{-1});
   std::fill(intensities_.begin(), intensities_.end(), uint8_t{0});
   std::fill(backFaceNumbers_.begin(), backFaceNumbers_.end(), 0U);

@@ -23,6 +23,10 @@ class CellBuffer {
 
   /// Resizes and clears; keeps capacity so a frame loop does not allocate.
   void Resize(int widthCells, int heightCells);
+  /// The same for a buffer of samples that only the glyph stage reads: face
+  /// numbers alone (the other fields stay empty, and nothing shades them).
+  void ResizeFacesOnly(int widthCells, int heightCells);
+  bool FacesOnly() const { return facesOnly_; }
   void Clear();
 
   int WidthCells() const { return widthCells_; }
@@ -59,6 +63,7 @@ class CellBuffer {
  private:
   int widthCells_ = 0;
   int heightCells_ = 0;
+  bool facesOnly_ = false;
   std::vector<char32_t> glyphs_;
   std::vector<uint32_t> faceNumbers_;
   std::vector<int16_t> levels_;

@@ -25,24 +25,52 @@ struct Tone {
   uint8_t intensity = 0;
 };
 
-Tone ToneOf(const CellSamples& s, SamplePattern members) {
+// The face most members show (lower number on a tie): counts per distinct face.
+uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
+  std::array<uint32_t, kMaxSamples> distinct;  // NOLINT(cppcoreguidelines-pro-type-member-init)
+  std::array<int, kMaxSamples> counts;         // NOLINT(cppcoreguidelines-pro-type-member-init)
+  int distinctCount = 0;
+  for (int i = 0; i < s.count; ++i) {
+    const uint32_t face = s.faces[i];
+    if (!((members >> i) & 1U) || face == 0) continue;
+    int d = 0;
+    while (d < distinctCount && distinct[d] != face) ++d;
+    if (d == distinctCount) {
+      distinct[d] = face;
+      counts[d] = 0;
+      ++distinctCount;
+    }
+    ++counts[d];
+  }
   uint32_t bestFace = 0;
-  int bestCount = 0, memberCount = 0, sum = 0;
+  int bestCount = 0;
+  for (int d = 0; d < distinctCount; ++d) {
+    if (counts[d] > bestCount || (counts[d] == bestCount && distinct[d] < bestFace)) {
+      bestFace = distinct[d];
+      bestCount = counts[d];
+    }
+  }
+  return bestFace;
+}
+
+Tone ToneOf(const CellSamples& s, SamplePattern members) {
+  // Usually the members show one face (and perhaps background): no counting.
+  uint32_t onlyFace = 0;
+  bool oneFace = true;
+  int memberCount = 0, sum = 0;
   for (int i = 0; i < s.count; ++i) {
     if (!((members >> i) & 1U)) continue;
     ++memberCount;
     sum += s.values[i];
     const uint32_t face = s.faces[i];
     if (face == 0) continue;
-    int count = 0;
-    for (int j = 0; j < s.count; ++j) count += ((members >> j) & 1U) && s.faces[j] == face ? 1 : 0;
-    if (count > bestCount || (count == bestCount && face < bestFace)) {
-      bestFace = face;
-      bestCount = count;
-    }
+    oneFace = oneFace && (onlyFace == 0 || face == onlyFace);
+    onlyFace = face;
   }
   if (memberCount == 0) return {};
-  return {bestFace, static_cast<uint8_t>((sum + memberCount / 2) / memberCount)};
+  const auto mean = static_cast<uint8_t>((sum + memberCount / 2) / memberCount);
+  if (oneFace) return {onlyFace, mean};
+  return {MajorityFace(s, members), mean};
 }
 
 // The best two-tone split of grey values (least squared error): a threshold
@@ -75,45 +103,103 @@ SamplePattern BrighterHalf(const CellSamples& s) {
   return ink;
 }
 
-void SetTone(const Tone& tone, const ShadeRamp& ramp, uint32_t& face, int16_t& level,
-             uint8_t& intensity) {
+// The samples of each part of the pattern grid, one value a part: the
+// parts' mean intensity (background 0) and the face most of its samples show.
+void ReduceToParts(const CellSamples& s, SampleGrid grid, SampleGrid pattern, CellSamples& parts) {
+  const int subAcross = grid.across / pattern.across, subDown = grid.down / pattern.down;
+  const int subCount = subAcross * subDown;
+  parts.count = pattern.Count();
+  parts.covered = 0;
+  for (int pj = 0; pj < pattern.down; ++pj) {
+    for (int pi = 0; pi < pattern.across; ++pi) {
+      SamplePattern members = 0;
+      int sum = 0;
+      const uint32_t firstFace = s.faces[(pj * subDown) * grid.across + pi * subAcross];
+      bool oneFace = true;
+      for (int y = 0; y < subDown; ++y) {
+        for (int x = 0; x < subAcross; ++x) {
+          const int n = (pj * subDown + y) * grid.across + pi * subAcross + x;
+          members |= SamplePattern{1} << n;
+          sum += s.values[n];
+          oneFace = oneFace && s.faces[n] == firstFace;
+        }
+      }
+      const int p = pj * pattern.across + pi;
+      parts.faces[p] = oneFace || (s.covered & members) == 0 ? firstFace : MajorityFace(s, members);
+      parts.values[p] = static_cast<uint8_t>((sum + subCount / 2) / subCount);
+      if (parts.faces[p] != 0) parts.covered |= SamplePattern{1} << p;
+    }
+  }
+}
+
+void SetTone(const Tone& tone, const std::array<int16_t, 256>& levelOf, uint32_t& face,
+             int16_t& level, uint8_t& intensity) {
   face = tone.face;
   intensity = tone.intensity;
-  level =
-      tone.face == 0 ? int16_t{-1} : static_cast<int16_t>(ramp.LevelFor(tone.intensity / 255.0));
+  level = tone.face == 0 ? int16_t{-1} : levelOf[tone.intensity];
 }
 
 }  // namespace
 
-void GlyphStage::Compose(const CellBuffer& samples, const DepthBuffer& sampleDepth, SampleGrid grid,
-                         const RenderOptions& options, CellBuffer& cells, DepthBuffer& depth) {
+void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+                         DepthBuffer& depth) {
   cells.Clear();
   depth.Clear();
-  const int k = grid.across, m = grid.down;
+  if (options.glyphs == GlyphMode::kAscii) ascii_.Prepare(in.grid);
+  // The mode's own grids with their sizes known to the compiler; any other (forced) at run time.
+  const SampleGrid g = in.grid;
+  if (g == SampleGrid{1, 2}) return ComposeGrid<1, 2>(in, options, cells, depth);
+  if (g == SampleGrid{2, 2}) return ComposeGrid<2, 2>(in, options, cells, depth);
+  if (g == SampleGrid{2, 3}) return ComposeGrid<2, 3>(in, options, cells, depth);
+  if (g == SampleGrid{2, 4}) return ComposeGrid<2, 4>(in, options, cells, depth);
+  ComposeGrid<0, 0>(in, options, cells, depth);
+}
+
+template <int kAcross, int kDown>
+void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+                             DepthBuffer& depth) {
+  const int k = kAcross > 0 ? kAcross : in.grid.across;
+  const int m = kDown > 0 ? kDown : in.grid.down;
   const GlyphMode mode = options.glyphs;
-  if (mode == GlyphMode::kAscii) ascii_.Prepare(grid);
+  const int partCount = in.pattern.Count();
+  const bool reduce = !(in.pattern == in.grid);
   const SamplePattern all =
-      grid.Count() >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << grid.Count()) - 1;
-  const auto& sampleFaces = samples.FaceNumbers();
-  const auto& sampleValues = samples.Intensities();
-  CellSamples s;
-  s.count = grid.Count();
+      partCount >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << partCount) - 1;
+  // The ramp level of each intensity, once a frame.
+  std::array<int16_t, 256> levelOf{};
+  for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
+  const uint32_t* const sampleFaces = in.faces.FaceNumbers().data();
+  const uint8_t* const faceIntensity = in.faceIntensities.data();
+  const size_t stride = static_cast<size_t>(in.faces.WidthCells());
+  CellSamples fine, parts;
+  fine.count = k * m;
   for (int row = 0; row < cells.HeightCells(); ++row) {
+    const size_t rowStart = in.faces.Index(0, row * m);
     for (int col = 0; col < cells.WidthCells(); ++col) {
-      // Step 1: the cell's samples, and the nearest depth among them.
-      s.covered = 0;
-      float nearest = 0.0F;
+      // Step 1: the cell's samples, whether they all show one face, and the nearest depth.
+      const size_t cellStart = rowStart + static_cast<size_t>(col) * k;
+      const uint32_t firstFace = sampleFaces[cellStart];
+      bool oneFace = true;
       for (int j = 0; j < m; ++j) {
-        const size_t rowStart = samples.Index(col * k, row * m + j);
         for (int i = 0; i < k; ++i) {
-          const int n = j * k + i;
-          s.faces[n] = sampleFaces[rowStart + i];
-          s.values[n] = s.faces[n] == 0 ? 0 : sampleValues[rowStart + i];
-          if (s.faces[n] != 0) s.covered |= SamplePattern{1} << n;
-          nearest = std::max(nearest, sampleDepth.At(rowStart + i));
+          const uint32_t face = sampleFaces[cellStart + j * stride + i];
+          fine.faces[j * k + i] = face;
+          oneFace = oneFace && face == firstFace;
         }
       }
-      if (s.covered == 0) continue;
+      if (oneFace && firstFace == 0) continue;  // background
+      fine.covered = 0;
+      float nearest = 0.0F;
+      for (int n = 0; n < k * m; ++n) {
+        const uint32_t face = fine.faces[n];
+        fine.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
+        fine.covered |= face != 0 ? SamplePattern{1} << n : 0;
+        if (in.writeDepth) {
+          nearest = std::max(nearest, in.depth.At(cellStart + (n / k) * stride + n % k));
+        }
+      }
+      if (reduce) ReduceToParts(fine, in.grid, in.pattern, parts);
+      const CellSamples& s = reduce ? parts : fine;
       // Step 2: the glyph and its colours.
       const size_t index = cells.Index(col, row);
       SamplePattern ink = s.covered;
@@ -121,34 +207,39 @@ void GlyphStage::Compose(const CellBuffer& samples, const DepthBuffer& sampleDep
       char32_t glyph = U' ';
       switch (mode) {
         case GlyphMode::kRamp: {
-          fore = ToneOf(s, all);
-          glyph = options.ramp.Glyph(options.ramp.LevelFor(fore.intensity / 255.0));
+          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
+          glyph = options.ramp.Glyph(levelOf[fore.intensity]);
           break;
         }
         case GlyphMode::kAscii: {
-          fore = ToneOf(s, s.covered);
+          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
           glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
                                     : ascii_.MatchInk(s.values.data(), s.covered);
           break;
         }
         case GlyphMode::kBraille:
-          fore = ToneOf(s, s.covered);
+          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
           glyph = PatternGlyph(mode, s.covered);
           break;
-        default:  // blocks, quadrants, sextants
-          if (options.twoColour) ink = BrighterHalf(s);
-          if (ink == 0) ink = all;  // one tone: a full block
-          fore = ToneOf(s, ink);
-          if (options.twoColour) back = ToneOf(s, all & ~ink);
+        default:          // blocks, quadrants, sextants
+          if (oneFace) {  // one tone: a full block
+            ink = all;
+            fore = {firstFace, s.values[0]};
+          } else {
+            if (options.twoColour) ink = BrighterHalf(s);
+            if (ink == 0) ink = all;
+            fore = ToneOf(s, ink);
+            if (options.twoColour) back = ToneOf(s, all & ~ink);
+          }
           glyph = PatternGlyph(mode, ink);
           break;
       }
       cells.Glyphs()[index] = glyph;
-      SetTone(fore, options.ramp, cells.FaceNumbers()[index], cells.Levels()[index],
+      SetTone(fore, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
               cells.Intensities()[index]);
-      SetTone(back, options.ramp, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
+      SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
               cells.BackIntensities()[index]);
-      depth.At(index) = nearest;
+      if (in.writeDepth) depth.At(index) = nearest;
     }
   }
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
@@ -15,10 +16,25 @@ namespace termshade {
 /// Keeps the ascii matcher's cache between frames.
 class GlyphStage {
  public:
-  void Compose(const CellBuffer& samples, const DepthBuffer& sampleDepth, SampleGrid grid,
-               const RenderOptions& options, CellBuffer& cells, DepthBuffer& depth);
+  /// A frame of samples: faces per sample, the intensity (0..255) of each
+  /// face seen (indexed by face number - 1), and whether depth is to be kept
+  /// (then the cell's depth is its nearest sample's).
+  struct Samples {
+    const CellBuffer& faces;
+    const DepthBuffer& depth;
+    std::span<const uint8_t> faceIntensities;
+    SampleGrid grid;     ///< samples a cell
+    SampleGrid pattern;  ///< the glyph's parts; grid is a multiple of it (SPEC 11 modes: equal)
+    bool writeDepth = true;
+  };
+  void Compose(const Samples& samples, const RenderOptions& options, CellBuffer& cells,
+               DepthBuffer& depth);
 
  private:
+  template <int kAcross, int kDown>  // 0: the grid's size at run time
+  void ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+                   DepthBuffer& depth);
+
   AsciiMatcher ascii_;
 };
 

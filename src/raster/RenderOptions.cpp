@@ -52,11 +52,18 @@ std::optional<ShadeMode> ParseShadeMode(std::string_view name) {
   return ValueOf(kShadeNames, name);
 }
 
-SampleGrid FrameSampleGrid(const RenderOptions& options) {
+SampleGrid PatternSampleGrid(const RenderOptions& options) {
   const SampleGrid forced = options.variant.samples;
   if (forced.Count() <= 0) return ModeSampleGrid(options.glyphs);
   // At most 32 samples: a cell's coverage pattern is 32 bits.
   return {std::clamp(forced.across, 1, 4), std::clamp(forced.down, 1, 8)};
+}
+
+SampleGrid FrameSampleGrid(const RenderOptions& options) {
+  const SampleGrid pattern = PatternSampleGrid(options);
+  if (options.variant.samples.Count() > 0 || !options.twoColour) return pattern;
+  const SampleGrid sub = ColourSubsamples(options.glyphs);
+  return {pattern.across * sub.across, pattern.down * sub.down};
 }
 
 }  // namespace termshade

@@ -22,7 +22,11 @@ std::string_view ShadeModeName(ShadeMode mode);
 std::optional<ShadeMode> ParseShadeMode(std::string_view name);
 
 struct RenderOptions;
-/// The sample grid a frame is drawn with: the variant's, else the glyph mode's.
+/// The sample grid a cell's glyph pattern is chosen on: the variant's, else the glyph mode's.
+SampleGrid PatternSampleGrid(const RenderOptions& options);
+/// The sample grid a frame is drawn with: the pattern grid, each part of it
+/// sampled sub.across x sub.down times where the colours are an average
+/// (the block modes with two colours; see GlyphStage).
 SampleGrid FrameSampleGrid(const RenderOptions& options);
 
 /// Variants of the pipeline kept to measure the product against

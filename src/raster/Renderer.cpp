@@ -72,15 +72,26 @@ RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
                                     CellBuffer& cells) {
   const int k = lastGrid_.across, m = lastGrid_.down;
   const Camera fine = SampleCamera(camera, lastGrid_);
-  fineCells_.Resize(cells.WidthCells() * k, cells.HeightCells() * m);
-  fineDepth_.Resize(cells.WidthCells() * k, cells.HeightCells() * m);
+  // Render below clears what it reads; only the faces are kept a sample.
+  const int fineWidth = cells.WidthCells() * k, fineHeight = cells.HeightCells() * m;
+  if (!fineCells_.FacesOnly() || fineCells_.WidthCells() != fineWidth ||
+      fineCells_.HeightCells() != fineHeight) {
+    fineCells_.ResizeFacesOnly(fineWidth, fineHeight);
+  }
+  if (fineDepth_.WidthCells() != fineWidth || fineDepth_.HeightCells() != fineHeight) {
+    fineDepth_.Resize(fineWidth, fineHeight);
+  }
   RenderOptions single = options;
   single.variant.samples = {1, 1};
   single.glyphs = GlyphMode::kRamp;
   const SampleGrid grid = lastGrid_;
   const RenderStats stats = Render(scene, fine, single, fineDepth_, fineCells_);
   lastGrid_ = grid;
-  glyphStage_.Compose(fineCells_, fineDepth_, grid, options, cells, depth);
+  const bool writeDepth =
+      options.keepDepth || ResolvedMethod(scene, options.method) == Method::kZBuffer;
+  glyphStage_.Compose(
+      {fineCells_, fineDepth_, faceIntensities_, grid, PatternSampleGrid(options), writeDepth},
+      options, cells, depth);
   return stats;
 }
 
@@ -227,7 +238,10 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
   faceLevels_.resize(scene.FaceCount(), -1);
   faceIntensities_.resize(scene.FaceCount(), 0);
   seenFaces_.clear();
+  uint32_t previous = 0;  // runs of one face look it up once
   for (uint32_t faceNumber : faces) {
+    if (faceNumber == previous) continue;
+    previous = faceNumber;
     if (faceNumber != 0 && faceLevels_[faceNumber - 1] == -1) {
       faceLevels_[faceNumber - 1] = 0;  // marked; restored to -1 below
       seenFaces_.push_back(faceNumber - 1);
@@ -258,7 +272,9 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
     const double clamped = std::isnan(intensity) ? 0.0 : std::clamp(intensity, 0.0, 1.0);
     faceIntensities_[seenFaces_[i]] = static_cast<uint8_t>(std::lround(255.0 * clamped));
   }
-  if (options.method != Method::kWire) {
+  if (cells.FacesOnly()) {
+    // Samples: the glyph stage reads faceIntensities_ of the faces seen.
+  } else if (options.method != Method::kWire) {
     auto& glyphs = cells.Glyphs();
     auto& levels = cells.Levels();
     auto& intensities = cells.Intensities();

@@ -35,5 +35,10 @@ struct SampleGrid {
 /// The grid a mode's glyphs are chosen from: ramp 1x1, ascii 2x4, blocks 1x2,
 /// quadrants 2x2, sextants 2x3, braille 2x4.
 SampleGrid ModeSampleGrid(GlyphMode mode);
+/// With two colours, the block modes show each part of the cell in the mean
+/// colour of that part (an area average, as chafa does for images): each
+/// part of ModeSampleGrid is sampled this many times across and down.
+/// {1, 1} for the other modes.
+SampleGrid ColourSubsamples(GlyphMode mode);
 
 }  // namespace termshade

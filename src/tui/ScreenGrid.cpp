@@ -16,7 +16,7 @@ void ScreenGrid::Put(int col, int row, std::string_view text, CellStyle style) {
   for (char c : text) {
     if (col >= widthCells_) break;
     if (col >= 0)
-      At(col, row) = {c >= 0x20 && c < 0x7f ? static_cast<char32_t>(c) : U'?', style, {}};
+      At(col, row) = {c >= 0x20 && c < 0x7f ? static_cast<char32_t>(c) : U'?', style, {}, {}};
     ++col;
   }
 }
@@ -26,14 +26,14 @@ void ScreenGrid::Put(int col, int row, std::u32string_view text, CellStyle style
   for (char32_t c : text) {
     if (col >= widthCells_) break;
     const bool oneCell = c < 0x80 ? c >= 0x20 && c < 0x7f : wcwidth(static_cast<wchar_t>(c)) == 1;
-    if (col >= 0) At(col, row) = {oneCell ? c : U'?', style, {}};
+    if (col >= 0) At(col, row) = {oneCell ? c : U'?', style, {}, {}};
     ++col;
   }
 }
 
 void ScreenGrid::FillRow(int row, CellStyle style) {
   if (row < 0 || row >= heightCells_) return;
-  for (int col = 0; col < widthCells_; ++col) At(col, row) = {U' ', style, {}};
+  for (int col = 0; col < widthCells_; ++col) At(col, row) = {U' ', style, {}, {}};
 }
 
 void ScreenGrid::Clear() {

@@ -20,7 +20,8 @@ enum class CellStyle : uint8_t {
 struct ScreenCell {
   char32_t glyph = U' ';
   CellStyle style = CellStyle::kPlain;
-  TermColour colour;  ///< foreground, for kFace
+  TermColour colour;      ///< foreground, for kFace
+  TermColour background;  ///< for kFace: a two-colour glyph mode's bg (default: the terminal's)
   bool operator==(const ScreenCell& other) const = default;
 };
 

@@ -17,10 +17,14 @@ void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours,
     for (int col = 0; col < cols; ++col) {
       const int level = cells.Level(col, row);
       ScreenCell& cell = grid.At(col, row);
-      cell = {cells.Glyph(col, row), CellStyle::kPlain, TermColour{}};
+      cell = {cells.Glyph(col, row), CellStyle::kPlain, TermColour{}, TermColour{}};
       if (level >= 0) {
         cell.style = CellStyle::kFace;
         cell.colour = colours.ForFace(cells.FaceNumber(col, row), level);
+        // Two-colour glyph modes (SPEC 11): the samples on the glyph's other side.
+        const int backLevel = cells.BackLevel(col, row);
+        if (backLevel >= 0)
+          cell.background = colours.ForFace(cells.BackFaceNumber(col, row), backLevel);
       }
     }
   }

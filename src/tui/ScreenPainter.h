@@ -16,7 +16,8 @@ namespace termshade {
 /// terminal code here; TerminalWriter sends the grid.
 class ScreenPainter {
  public:
-  /// The frame's cells, faces coloured by colours (nothing with ColourMode::kNone).
+  /// The frame's cells, faces coloured by colours (nothing with ColourMode::kNone); a cell
+  /// with a background face (the two-colour glyph modes) gets that face's colour as bg.
   void PaintFrame(const CellBuffer& cells, CellColourMap& colours, ScreenGrid& grid) const;
   /// The bottom row in reverse video; the text is sanitized and cut to fit.
   void PaintStatus(const std::string& text, ScreenGrid& grid) const;

@@ -55,16 +55,22 @@ void TerminalWriter::AppendMove(int col, int row) {
 TerminalWriter::Attributes TerminalWriter::AttributesFor(const ScreenCell& cell) {
   Attributes a;
   a.reverse = cell.style == CellStyle::kReverse;
-  if (cell.style == CellStyle::kFace) a.foreground = cell.colour;
+  if (cell.style == CellStyle::kFace) {
+    a.foreground = cell.colour;
+    a.background = cell.background;
+  }
   return a;
 }
 
 void TerminalWriter::AppendAttributes(const Attributes& wanted) {
   if (wanted == current_) return;
   // SGR can only add attributes; dropping one (or a colour) means a reset first.
+  const auto dropped = [](const TermColour& now, const TermColour& next) {
+    return now.kind != TermColour::Kind::kDefault && next.kind == TermColour::Kind::kDefault;
+  };
   const bool reset = (current_.reverse && !wanted.reverse) ||
-                     (current_.foreground.kind != TermColour::Kind::kDefault &&
-                      wanted.foreground.kind == TermColour::Kind::kDefault);
+                     dropped(current_.foreground, wanted.foreground) ||
+                     dropped(current_.background, wanted.background);
   if (reset) {
     AppendCapability(out_, "sgr0");
     current_ = Attributes{};
@@ -75,6 +81,13 @@ void TerminalWriter::AppendAttributes(const Attributes& wanted) {
       AppendParameterized(out_, "setaf", wanted.foreground.index);
     } else if (wanted.foreground.kind == TermColour::Kind::kRgb) {
       AppendForegroundSgr(wanted.foreground, out_);  // no terminfo string for 24-bit colour
+    }
+  }
+  if (!(wanted.background == current_.background)) {
+    if (wanted.background.kind == TermColour::Kind::kIndexed) {
+      AppendParameterized(out_, "setab", wanted.background.index);
+    } else if (wanted.background.kind == TermColour::Kind::kRgb) {
+      AppendBackgroundSgr(wanted.background, out_);
     }
   }
   current_ = wanted;
@@ -127,7 +140,10 @@ void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int
       if (cursorRow != row || cursorCol != col) AppendMove(col, row);
       for (int c = col; c < end; ++c) {
         const ScreenCell& cell = grid.At(c, row);
-        AppendAttributes(AttributesFor(cell));
+        Attributes wanted = AttributesFor(cell);
+        // A full block hides its background: keep the current one rather than pay for a reset.
+        if (cell.glyph == U'\u2588') wanted.background = current_.background;
+        AppendAttributes(wanted);
         AppendUtf8(out_, cell.glyph);
       }
       cursorCol = end;

@@ -46,6 +46,7 @@ class TerminalWriter {
   struct Attributes {
     bool reverse = false;
     TermColour foreground;
+    TermColour background;
     bool operator==(const Attributes&) const = default;
   };
   static Attributes AttributesFor(const ScreenCell& cell);

@@ -342,8 +342,14 @@ class EventLoop {
     cells_.Resize(cols, frameRows);
     depth_.Resize(cols, frameRows);
     const auto start = Clock::now();
+    frameOptions_ = state_.Render();  // assigned in place: no allocation in a steady loop
+    // The block modes with colour: fg and bg, as the ansi dump draws them.
+    const GlyphMode mode = frameOptions_.glyphs;
+    frameOptions_.twoColour = state_.Colour() != ColourMode::kNone &&
+                              (mode == GlyphMode::kBlocks || mode == GlyphMode::kQuadrants ||
+                               mode == GlyphMode::kSextants);
     const RenderStats stats = renderer_.Render(
-        state_.CurrentScene(), state_.CameraFor(cols, frameRows), state_.Render(), depth_, cells_);
+        state_.CurrentScene(), state_.CameraFor(cols, frameRows), frameOptions_, depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     CellColourMap colours(state_.CurrentScene().mesh.faceColors, levelCount, state_.Colour());
     painter_.PaintFrame(cells_, colours, grid_);
@@ -404,6 +410,7 @@ class EventLoop {
   TerminalWriter writer_;
   ScreenGrid grid_;
   Renderer renderer_;
+  RenderOptions frameOptions_;  ///< the state's options with the screen's colours
   CellBuffer cells_;
   DepthBuffer depth_;
   LineEditor editor_;

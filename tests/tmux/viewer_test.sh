@@ -68,7 +68,8 @@ frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line =
   screen | head -n "$rows" | sed 's/[[:space:]]*$//' >"$work/screen.txt"
   # The viewer picks its glyph mode for the terminal and names it on the status line.
   note_glyphs
-  "$bin" render "$@" --glyphs "${last_glyphs:-none-seen}" | sed 's/[[:space:]]*$//' >"$work/render.txt"
+  # (An ansi dump compares by its characters: SGR sequences dropped.)
+  "$bin" render "$@" --glyphs "${last_glyphs:-none-seen}" | sed 's/\x1b\[[0-9;]*m//g; s/[[:space:]]*$//' >"$work/render.txt"
   if cmp -s "$work/screen.txt" "$work/render.txt"; then pass; else
     fail "$name: screen differs from 'termshade render $*'"
     diff "$work/screen.txt" "$work/render.txt" | head -20
@@ -318,7 +319,8 @@ tm send-keys -t v x q
 wait_for '^\$ ?$' 5 >/dev/null || fail "q after help"
 # 11. Colour where the terminal has it (256 colours here, 24-bit with
 # COLORTERM=truecolor), none with NO_COLOR, --mono or --color none; never a
-# background of our own; nothing of it left on the shell's line afterwards.
+# background of our own in a one-colour mode (ascii here); nothing of it left
+# on the shell's line afterwards.
 colour_codes() { grep -oE '38;(5;[0-9]+|2;[0-9]+;[0-9]+)' | sort -u; }
 run "clear; $bin"
 wait_for '\? help' 5 >/dev/null
@@ -404,13 +406,26 @@ wait_for '^\$ ?$' 5 >/dev/null
 # 13. The same first screen in a UTF-8 locale as in the C locale.
 run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8"
-frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24
+# (With colour the block modes split each cell into fg and bg, as the ansi dump does.)
+frame_matches_render utf8_locale_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24 --format ansi --color 256
 # g cycles the glyph modes; each frame is render's in that mode.
 for mode in sextants braille ramp ascii blocks; do
   tm send-keys -t v g
   wait_for " $mode " 5 >/dev/null || fail "g did not reach $mode"
-  frame_matches_render "glyphs_$mode" 24 "$src/data/sphere_cone.dat" --size 80x24
+  case $mode in
+    blocks | sextants) as_dump=(--format ansi --color 256) ;;
+    *) as_dump=() ;;
+  esac
+  frame_matches_render "glyphs_$mode" 24 "$src/data/sphere_cone.dat" --size 80x24 "${as_dump[@]}"
 done
+# The two-colour modes paint their background: the ansi dump's bg colours (SGR 48).
+bg_codes() { grep -oE '[[;]48;(5;[0-9]+|2;[0-9]+;[0-9]+)' | cut -c2- | sort -u; }
+tm capture-pane -t v -p -e | head -n 24 | bg_codes >"$work/screen_bg.txt"
+"$bin" render "$src/data/sphere_cone.dat" --size 80x24 --glyphs blocks --format ansi --color 256 | bg_codes >"$work/dump_bg.txt"
+if [ -s "$work/dump_bg.txt" ] && cmp -s "$work/screen_bg.txt" "$work/dump_bg.txt"; then pass; else
+  fail "blocks: the screen's background colours are not the ansi dump's"
+  diff "$work/screen_bg.txt" "$work/dump_bg.txt" | head -5
+fi
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 
@@ -418,7 +433,7 @@ wait_for '^\$ ?$' 5 >/dev/null
 # a clear refusal in the C locale (the terminal could not show it).
 run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin --ramp '░▒▓█'"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start with a block ramp"
-frame_matches_render block_ramp_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24 --ramp '░▒▓█'
+frame_matches_render block_ramp_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24 --ramp '░▒▓█' --format ansi --color 256
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 # The prompt takes UTF-8: a path typed with an accent opens (the status
@@ -431,7 +446,7 @@ tm send-keys -t v -l "$work/café.dat"
 wait_for 'open: .*café\.dat' 5 >/dev/null && pass || fail "prompt did not show the accented path"
 tm send-keys -t v Enter
 wait_for 'opened .*caf\\xC3\\xA9\.dat' 5 >/dev/null && pass || fail "accented path did not open"
-frame_matches_render accented_path_opened 24 "$work/café.dat" --size 80x24
+frame_matches_render accented_path_opened 24 "$work/café.dat" --size 80x24 --format ansi --color 256
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 run "clear; LANG=C LC_ALL=C $bin --ramp '░▒▓█'; echo exit=\$?"
