@@ -33,41 +33,38 @@ Bounds FiniteBounds(const std::vector<Vec3>& points) {
   return bounds;
 }
 
-void AddFaceGeometry(Scene& scene, size_t face, std::vector<Vec3>& cornersScratch,
-                     std::vector<CornerTriangle>& trianglesScratch) {
+// The face's plane through its mean corner (exact for planar faces, a
+// least-squares-like compromise for slightly non-planar ones); false when a
+// corner is not finite (the plane is then zero).
+bool AddFacePlane(Scene& scene, size_t face) {
   const auto corners = scene.mesh.Face(face);
-  cornersScratch.clear();
+  const auto pointAt = [&](size_t i) { return scene.verticesWorld[corners[i]]; };
   bool finite = true;
-  for (uint32_t v : corners) {
-    cornersScratch.push_back(scene.verticesWorld[v]);
-    finite = finite && IsFinite(scene.verticesWorld[v]);
-  }
-  // Normal and plane through the mean corner (exact for planar faces,
-  // a least-squares-like compromise for slightly non-planar ones).
-  const Vec3 normal = finite ? Normalized(NewellNormal(cornersScratch)) : Vec3{};
   Vec3 mean;
-  for (const Vec3& p : cornersScratch) mean = mean + p;
-  mean = mean * (1.0 / static_cast<double>(std::max<size_t>(1, cornersScratch.size())));
+  for (size_t i = 0; i < corners.size(); ++i) {
+    finite = finite && IsFinite(pointAt(i));
+    mean = mean + pointAt(i);
+  }
+  mean = mean * (1.0 / static_cast<double>(std::max<size_t>(1, corners.size())));
+  const Vec3 normal = finite ? Normalized(NewellNormal(corners.size(), pointAt)) : Vec3{};
   scene.facePlanesWorld.push_back({normal, finite ? Dot(normal, mean) : 0.0});
+  return finite;
+}
 
+void AddFaceTriangles(Scene& scene, size_t face, bool finite, std::vector<Vec3>& cornersScratch,
+                      std::vector<CornerTriangle>& trianglesScratch) {
+  const auto corners = scene.mesh.Face(face);
   trianglesScratch.clear();
-  if (finite) TriangulatePolygon(cornersScratch, trianglesScratch);
+  if (finite) {
+    cornersScratch.clear();
+    for (uint32_t v : corners) cornersScratch.push_back(scene.verticesWorld[v]);
+    TriangulatePolygon(cornersScratch, trianglesScratch);
+  }
   for (const CornerTriangle& t : trianglesScratch) {
     scene.triangles.push_back(
         {{corners[t[0]], corners[t[1]], corners[t[2]]}, static_cast<uint32_t>(face)});
   }
   scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
-}
-
-// Unique undirected edges in (low, high) order, each with the first face that
-// has it; an edge is hidden when any face that has it hides it.
-void CollectEdges(Scene& scene, const EdgeAdjacency& adjacency) {
-  adjacency.ForEachEdge([&scene](uint32_t low, std::span<const EdgeUse> uses) {
-    const bool hidden =
-        std::any_of(uses.begin(), uses.end(), [](const EdgeUse& use) { return use.hidden; });
-    if (!hidden) scene.edges.push_back({{low, uses[0].highVertex}, uses[0].face});
-  });
-  for (const auto& segment : scene.mesh.segments) scene.edges.push_back({segment, UINT32_MAX});
 }
 
 // Closed (every edge used once each way), connected, and convex at every
@@ -76,7 +73,7 @@ void CollectEdges(Scene& scene, const EdgeAdjacency& adjacency) {
 bool IsConvexClosedSolid(const Scene& scene, const EdgeAdjacency& adjacency) {
   const Mesh& mesh = scene.mesh;
   const size_t faceCount = mesh.FaceCount();
-  if (faceCount < 4 || scene.triangles.empty()) return false;
+  if (faceCount < 4) return false;
   std::vector<uint32_t> component(faceCount);
   for (uint32_t f = 0; f < faceCount; ++f) component[f] = f;
   auto root = [&](uint32_t f) {
@@ -139,15 +136,26 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   scene.facesTurnedOutward = OrientClosedPartsOutward(scene.mesh, *adjacency, scene.verticesWorld);
   if (scene.facesTurnedOutward > 0) adjacency.emplace(scene.mesh);
 
-  // Step 3: per-face normal, plane and triangles.
+  // Step 3: per-face plane, then whether the model is a convex solid; the
+  // edge uses are freed before the triangles take their place.
+  const size_t faceCount = scene.mesh.FaceCount();
+  scene.facePlanesWorld.reserve(faceCount);
+  std::vector<uint8_t> faceFinite(faceCount);
+  for (size_t face = 0; face < faceCount; ++face) faceFinite[face] = AddFacePlane(scene, face);
+  const bool convexIfAnyTriangle = IsConvexClosedSolid(scene, *adjacency);
+  adjacency.reset();
+
+  // Step 4: per-face triangles (a face of n corners gives at most n - 2).
+  const size_t cornerCount = scene.mesh.faceCorners.size();
+  scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
+  scene.faceTriangleStarts.reserve(faceCount + 1);
+  scene.faceTriangleStarts.push_back(0);
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;
-  scene.faceTriangleStarts.push_back(0);
-  for (size_t face = 0; face < scene.mesh.FaceCount(); ++face) {
-    AddFaceGeometry(scene, face, cornersScratch, trianglesScratch);
+  for (size_t face = 0; face < faceCount; ++face) {
+    AddFaceTriangles(scene, face, faceFinite[face] != 0, cornersScratch, trianglesScratch);
   }
-  CollectEdges(scene, *adjacency);
-  scene.convexClosedSolid = IsConvexClosedSolid(scene, *adjacency);
+  scene.convexClosedSolid = convexIfAnyTriangle && !scene.triangles.empty();
   return scene;
 }
 
