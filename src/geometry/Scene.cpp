@@ -8,6 +8,7 @@
 
 #include "geometry/EdgeAdjacency.h"
 #include "geometry/FaceNormal.h"
+#include "geometry/HugePages.h"
 #include "geometry/OutwardOrientation.h"
 #include "geometry/Triangulate.h"
 
@@ -118,6 +119,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
 
   // Step 1: world space is file space turned up (+z), centered on the bounding box.
   scene.verticesWorld.reserve(scene.mesh.verticesFile.size());
+  AdviseHugePages(scene.verticesWorld);
   for (const Vec3& p : scene.mesh.verticesFile) {
     scene.verticesWorld.push_back(ZUpFromFile(scene.upAxis, p));
   }
@@ -140,6 +142,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // edge uses are freed before the triangles take their place.
   const size_t faceCount = scene.mesh.FaceCount();
   scene.facePlanesWorld.reserve(faceCount);
+  AdviseHugePages(scene.facePlanesWorld);
   std::vector<uint8_t> faceFinite(faceCount);
   for (size_t face = 0; face < faceCount; ++face) faceFinite[face] = AddFacePlane(scene, face);
   const bool convexIfAnyTriangle = IsConvexClosedSolid(scene, *adjacency);
@@ -149,6 +152,8 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   const size_t cornerCount = scene.mesh.faceCorners.size();
   scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
   scene.faceTriangleStarts.reserve(faceCount + 1);
+  AdviseHugePages(scene.triangles);
+  AdviseHugePages(scene.faceTriangleStarts);
   scene.faceTriangleStarts.push_back(0);
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;

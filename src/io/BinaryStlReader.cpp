@@ -7,6 +7,8 @@
 #include <cstring>
 #include <vector>
 
+#include "geometry/HugePages.h"
+
 namespace termshade {
 namespace {
 
@@ -39,20 +41,34 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
   if (triangles == 0) return LoadError{path, 0, 0, "the file holds no triangles"};
 
   // Step 1: the corners as stored, three float triples a triangle.
-  std::vector<std::array<float, 3>> corners(triangles * 3);
+  std::vector<std::array<float, 3>> corners;
+  corners.reserve(triangles * 3);
+  AdviseHugePages(corners);
+  corners.resize(triangles * 3);
   for (size_t t = 0; t < triangles; ++t) {
     const char* record = bytes.data() + kFirstRecord + t * kRecordBytes;
     std::memcpy(corners[t * 3].data(), record + 12, 36);
   }
 
   // Step 2: weld bit-identical positions, keeping first-occurrence order.
-  std::vector<unsigned int> remap(corners.size());
+  std::vector<unsigned int> remap;
+  remap.reserve(corners.size());
+  AdviseHugePages(remap);
+  remap.resize(corners.size());
   const size_t vertexCount = meshopt_generateVertexRemap(
       remap.data(), nullptr, corners.size(), corners.data(), corners.size(), sizeof corners[0]);
 
   // Step 3: the mesh, one face per triangle in file order.
   Mesh mesh;
   mesh.name = path;
+  mesh.verticesFile.reserve(vertexCount);
+  mesh.faceCorners.reserve(corners.size());
+  mesh.faceStarts.reserve(triangles + 1);
+  mesh.edgeHidden.reserve(corners.size());
+  AdviseHugePages(mesh.verticesFile);
+  AdviseHugePages(mesh.faceCorners);
+  AdviseHugePages(mesh.faceStarts);
+  AdviseHugePages(mesh.edgeHidden);
   mesh.verticesFile.resize(vertexCount);
   for (size_t i = 0; i < corners.size(); ++i) {
     const auto& p = corners[i];
