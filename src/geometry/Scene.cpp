@@ -35,12 +35,12 @@ Bounds FiniteBounds(const std::vector<Vec3>& points) {
 }
 
 // The face's plane through its mean corner (exact for planar faces, a
-// least-squares-like compromise for slightly non-planar ones); false when a
-// corner is not finite (the plane is then zero).
-bool AddFacePlane(Scene& scene, size_t face) {
+// least-squares-like compromise for slightly non-planar ones); zero, with
+// finite false, when a corner is not finite.
+FacePlane PlaneOfFace(const Scene& scene, size_t face, bool& finite) {
   const auto corners = scene.mesh.Face(face);
   const auto pointAt = [&](size_t i) { return scene.verticesWorld[corners[i]]; };
-  bool finite = true;
+  finite = true;
   Vec3 mean;
   for (size_t i = 0; i < corners.size(); ++i) {
     finite = finite && IsFinite(pointAt(i));
@@ -48,8 +48,7 @@ bool AddFacePlane(Scene& scene, size_t face) {
   }
   mean = mean * (1.0 / static_cast<double>(std::max<size_t>(1, corners.size())));
   const Vec3 normal = finite ? Normalized(NewellNormal(corners.size(), pointAt)) : Vec3{};
-  scene.facePlanesWorld.push_back({normal, finite ? Dot(normal, mean) : 0.0});
-  return finite;
+  return {normal, finite ? Dot(normal, mean) : 0.0};
 }
 
 void AddFaceTriangles(Scene& scene, size_t face, bool finite, std::vector<Vec3>& cornersScratch,
@@ -82,8 +81,11 @@ bool IsConvexClosedSolid(const Scene& scene, const EdgeAdjacency& adjacency) {
     return f;
   };
   const double tolerance = 1e-9 * std::max(1.0, scene.diagonalModelUnits);
+  // Planes are computed where needed (each face about three times), so that
+  // the edge uses and all faces' planes are never in memory together.
   auto behindPlane = [&](uint32_t f, uint32_t g) {
-    const FacePlane& plane = scene.facePlanesWorld[f];
+    bool finite = true;
+    const FacePlane plane = PlaneOfFace(scene, f, finite);
     if (plane.normal == Vec3{}) return false;
     for (uint32_t v : mesh.Face(g)) {
       if (Dot(plane.normal, scene.verticesWorld[v]) - plane.offset > tolerance) return false;
@@ -138,27 +140,27 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   scene.facesTurnedOutward = OrientClosedPartsOutward(scene.mesh, *adjacency, scene.verticesWorld);
   if (scene.facesTurnedOutward > 0) adjacency.emplace(scene.mesh);
 
-  // Step 3: per-face plane, then whether the model is a convex solid; the
-  // edge uses are freed before the triangles take their place.
-  const size_t faceCount = scene.mesh.FaceCount();
-  scene.facePlanesWorld.reserve(faceCount);
-  AdviseHugePages(scene.facePlanesWorld);
-  std::vector<uint8_t> faceFinite(faceCount);
-  for (size_t face = 0; face < faceCount; ++face) faceFinite[face] = AddFacePlane(scene, face);
+  // Step 3: whether the model is a convex solid; the edge uses are freed
+  // before the planes and triangles take their place.
   const bool convexIfAnyTriangle = IsConvexClosedSolid(scene, *adjacency);
   adjacency.reset();
 
-  // Step 4: per-face triangles (a face of n corners gives at most n - 2).
+  // Step 4: per-face plane and triangles (a face of n corners gives at most n - 2).
+  const size_t faceCount = scene.mesh.FaceCount();
   const size_t cornerCount = scene.mesh.faceCorners.size();
+  scene.facePlanesWorld.reserve(faceCount);
   scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
   scene.faceTriangleStarts.reserve(faceCount + 1);
+  AdviseHugePages(scene.facePlanesWorld);
   AdviseHugePages(scene.triangles);
   AdviseHugePages(scene.faceTriangleStarts);
   scene.faceTriangleStarts.push_back(0);
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;
   for (size_t face = 0; face < faceCount; ++face) {
-    AddFaceTriangles(scene, face, faceFinite[face] != 0, cornersScratch, trianglesScratch);
+    bool finite = true;
+    scene.facePlanesWorld.push_back(PlaneOfFace(scene, face, finite));
+    AddFaceTriangles(scene, face, finite, cornersScratch, trianglesScratch);
   }
   scene.convexClosedSolid = convexIfAnyTriangle && !scene.triangles.empty();
   return scene;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "geometry/HugePages.h"
@@ -50,31 +51,31 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
     std::memcpy(corners[t * 3].data(), record + 12, 36);
   }
 
-  // Step 2: weld bit-identical positions, keeping first-occurrence order.
-  std::vector<unsigned int> remap;
-  remap.reserve(corners.size());
-  AdviseHugePages(remap);
-  remap.resize(corners.size());
-  const size_t vertexCount = meshopt_generateVertexRemap(
-      remap.data(), nullptr, corners.size(), corners.data(), corners.size(), sizeof corners[0]);
-
-  // Step 3: the mesh, one face per triangle in file order.
+  // Step 2: weld bit-identical positions, keeping first-occurrence order;
+  // the remap becomes the faces' corners.
+  static_assert(std::is_same_v<unsigned int, uint32_t>);
   Mesh mesh;
   mesh.name = path;
-  mesh.verticesFile.reserve(vertexCount);
   mesh.faceCorners.reserve(corners.size());
-  mesh.faceStarts.reserve(triangles + 1);
-  mesh.edgeHidden.reserve(corners.size());
-  AdviseHugePages(mesh.verticesFile);
   AdviseHugePages(mesh.faceCorners);
-  AdviseHugePages(mesh.faceStarts);
-  AdviseHugePages(mesh.edgeHidden);
+  mesh.faceCorners.resize(corners.size());
+  const size_t vertexCount =
+      meshopt_generateVertexRemap(mesh.faceCorners.data(), nullptr, corners.size(),
+                                  corners.data(), corners.size(), sizeof corners[0]);
+
+  // Step 3: the vertices, then (the corners freed) one face per triangle in file order.
+  mesh.verticesFile.reserve(vertexCount);
+  AdviseHugePages(mesh.verticesFile);
   mesh.verticesFile.resize(vertexCount);
   for (size_t i = 0; i < corners.size(); ++i) {
     const auto& p = corners[i];
-    mesh.verticesFile[remap[i]] = {p[0], p[1], p[2]};
+    mesh.verticesFile[mesh.faceCorners[i]] = {p[0], p[1], p[2]};
   }
-  mesh.faceCorners.assign(remap.begin(), remap.end());
+  corners = {};
+  mesh.faceStarts.reserve(triangles + 1);
+  mesh.edgeHidden.reserve(mesh.faceCorners.size());
+  AdviseHugePages(mesh.faceStarts);
+  AdviseHugePages(mesh.edgeHidden);
   mesh.faceStarts.resize(triangles + 1);
   for (size_t t = 0; t <= triangles; ++t) mesh.faceStarts[t] = static_cast<uint32_t>(t * 3);
   mesh.edgeHidden.assign(mesh.faceCorners.size(), 0);
