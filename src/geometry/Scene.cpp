@@ -1,6 +1,7 @@
 #include "geometry/Scene.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -35,12 +36,12 @@ Bounds FiniteBounds(const std::vector<Vec3>& points) {
 }
 
 // The face's plane through its mean corner (exact for planar faces, a
-// least-squares-like compromise for slightly non-planar ones); zero, with
-// finite false, when a corner is not finite.
-FacePlane PlaneOfFace(const Scene& scene, size_t face, bool& finite) {
+// least-squares-like compromise for slightly non-planar ones); zero when a
+// corner is not finite.
+FacePlane PlaneOfFace(const Scene& scene, size_t face) {
   const auto corners = scene.mesh.Face(face);
   const auto pointAt = [&](size_t i) { return scene.verticesWorld[corners[i]]; };
-  finite = true;
+  bool finite = true;
   Vec3 mean;
   for (size_t i = 0; i < corners.size(); ++i) {
     finite = finite && IsFinite(pointAt(i));
@@ -51,15 +52,18 @@ FacePlane PlaneOfFace(const Scene& scene, size_t face, bool& finite) {
   return {normal, finite ? Dot(normal, mean) : 0.0};
 }
 
-void AddFaceTriangles(Scene& scene, size_t face, bool finite, std::vector<Vec3>& cornersScratch,
+// The face's triangles, none when a corner is not finite.
+void AddFaceTriangles(Scene& scene, size_t face, std::vector<Vec3>& cornersScratch,
                       std::vector<CornerTriangle>& trianglesScratch) {
   const auto corners = scene.mesh.Face(face);
   trianglesScratch.clear();
-  if (finite) {
-    cornersScratch.clear();
-    for (uint32_t v : corners) cornersScratch.push_back(scene.verticesWorld[v]);
-    TriangulatePolygon(cornersScratch, trianglesScratch);
+  cornersScratch.clear();
+  bool finite = true;
+  for (uint32_t v : corners) {
+    cornersScratch.push_back(scene.verticesWorld[v]);
+    finite = finite && IsFinite(scene.verticesWorld[v]);
   }
+  if (finite) TriangulatePolygon(cornersScratch, trianglesScratch);
   for (const CornerTriangle& t : trianglesScratch) {
     scene.triangles.push_back(
         {{corners[t[0]], corners[t[1]], corners[t[2]]}, static_cast<uint32_t>(face)});
@@ -67,47 +71,56 @@ void AddFaceTriangles(Scene& scene, size_t face, bool finite, std::vector<Vec3>&
   scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
 }
 
-// Closed (every edge used once each way), connected, and convex at every
-// edge (each face's corners lie on or behind its neighbour's plane): a convex
-// solid, where facing decides visibility.
-bool IsConvexClosedSolid(const Scene& scene, const EdgeAdjacency& adjacency) {
-  const Mesh& mesh = scene.mesh;
+// Closed (every edge used once each way) and connected: the two faces of
+// each edge, or nullopt when the mesh is not such a surface (or has under 4
+// faces). The pairs let the edge uses be freed before the planes are built.
+std::optional<std::vector<std::array<uint32_t, 2>>> ClosedSurfaceFacePairs(
+    const Mesh& mesh, const EdgeAdjacency& adjacency) {
   const size_t faceCount = mesh.FaceCount();
-  if (faceCount < 4) return false;
+  if (faceCount < 4) return std::nullopt;
   std::vector<uint32_t> component(faceCount);
   for (uint32_t f = 0; f < faceCount; ++f) component[f] = f;
   auto root = [&](uint32_t f) {
     while (component[f] != f) f = component[f] = component[component[f]];
     return f;
   };
-  const double tolerance = 1e-9 * std::max(1.0, scene.diagonalModelUnits);
-  // Planes are computed where needed (each face about three times), so that
-  // the edge uses and all faces' planes are never in memory together.
-  auto behindPlane = [&](uint32_t f, uint32_t g) {
-    bool finite = true;
-    const FacePlane plane = PlaneOfFace(scene, f, finite);
-    if (plane.normal == Vec3{}) return false;
-    for (uint32_t v : mesh.Face(g)) {
-      if (Dot(plane.normal, scene.verticesWorld[v]) - plane.offset > tolerance) return false;
-    }
-    return true;
-  };
-  bool convex = true;
+  std::vector<std::array<uint32_t, 2>> pairs;
+  pairs.reserve(adjacency.UseCount() / 2);
+  AdviseHugePages(pairs);
+  bool closed = true;
   adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
-    if (!convex) return;
+    if (!closed) return;
     if (uses.size() != 2 || uses[0].forward == uses[1].forward) {
-      convex = false;  // open, non-manifold or inconsistently wound
+      closed = false;  // open, non-manifold or inconsistently wound
       return;
     }
     const uint32_t f = uses[0].face, g = uses[1].face;
     component[root(f)] = root(g);
-    convex = behindPlane(f, g) && behindPlane(g, f);
+    pairs.push_back({f, g});
   });
-  if (!convex) return false;
+  if (!closed) return std::nullopt;
   for (uint32_t f = 0; f < faceCount; ++f) {
-    if (root(f) != root(0)) return false;
+    if (root(f) != root(0)) return std::nullopt;
   }
-  return true;
+  return pairs;
+}
+
+// Convex at every edge: each face's corners lie on or behind its neighbour's
+// plane. With a closed connected surface, a convex solid, where facing
+// decides visibility.
+bool ConvexAtEveryEdge(const Scene& scene, std::span<const std::array<uint32_t, 2>> facePairs) {
+  const double tolerance = 1e-9 * std::max(1.0, scene.diagonalModelUnits);
+  auto behindPlane = [&](uint32_t f, uint32_t g) {
+    const FacePlane& plane = scene.facePlanesWorld[f];
+    if (plane.normal == Vec3{}) return false;
+    for (uint32_t v : scene.mesh.Face(g)) {
+      if (Dot(plane.normal, scene.verticesWorld[v]) - plane.offset > tolerance) return false;
+    }
+    return true;
+  };
+  return std::all_of(facePairs.begin(), facePairs.end(), [&](const std::array<uint32_t, 2>& pair) {
+    return behindPlane(pair[0], pair[1]) && behindPlane(pair[1], pair[0]);
+  });
 }
 
 }  // namespace
@@ -140,29 +153,34 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   scene.facesTurnedOutward = OrientClosedPartsOutward(scene.mesh, *adjacency, scene.verticesWorld);
   if (scene.facesTurnedOutward > 0) adjacency.emplace(scene.mesh);
 
-  // Step 3: whether the model is a convex solid; the edge uses are freed
-  // before the planes and triangles take their place.
-  const bool convexIfAnyTriangle = IsConvexClosedSolid(scene, *adjacency);
+  // Step 3: whether the model is a closed connected surface; the edge uses
+  // are freed before the planes and triangles take their place.
+  auto facePairs = ClosedSurfaceFacePairs(scene.mesh, *adjacency);
   adjacency.reset();
 
-  // Step 4: per-face plane and triangles (a face of n corners gives at most n - 2).
+  // Step 4: per-face planes, then whether the surface is convex at every edge.
   const size_t faceCount = scene.mesh.FaceCount();
-  const size_t cornerCount = scene.mesh.faceCorners.size();
   scene.facePlanesWorld.reserve(faceCount);
+  AdviseHugePages(scene.facePlanesWorld);
+  for (size_t face = 0; face < faceCount; ++face) {
+    scene.facePlanesWorld.push_back(PlaneOfFace(scene, face));
+  }
+  const bool convex = facePairs && ConvexAtEveryEdge(scene, *facePairs);
+  facePairs.reset();
+
+  // Step 5: per-face triangles (a face of n corners gives at most n - 2).
+  const size_t cornerCount = scene.mesh.faceCorners.size();
   scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
   scene.faceTriangleStarts.reserve(faceCount + 1);
-  AdviseHugePages(scene.facePlanesWorld);
   AdviseHugePages(scene.triangles);
   AdviseHugePages(scene.faceTriangleStarts);
   scene.faceTriangleStarts.push_back(0);
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;
   for (size_t face = 0; face < faceCount; ++face) {
-    bool finite = true;
-    scene.facePlanesWorld.push_back(PlaneOfFace(scene, face, finite));
-    AddFaceTriangles(scene, face, finite, cornersScratch, trianglesScratch);
+    AddFaceTriangles(scene, face, cornersScratch, trianglesScratch);
   }
-  scene.convexClosedSolid = convexIfAnyTriangle && !scene.triangles.empty();
+  scene.convexClosedSolid = convex && !scene.triangles.empty();
   return scene;
 }
 
