@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "FrameTiming.h"
 #include "Statistics.h"
@@ -60,12 +61,74 @@ ChildRun RunRenderChild(const LoadBenchOptions& options, const std::string& mode
   return run;
 }
 
-/// Median frame time of a turntable at the bench's size, in this process.
-double MedianFrameMs(const LoadBenchOptions& options, const std::string& modelPath) {
-  Loaded<Mesh> mesh = LoadModelFile(modelPath);
-  if (!mesh.Ok()) return -1.0;
-  return MedianTurntableFrameMs(PrepareScene(std::move(mesh.Value())), options.widthCells,
-                                options.heightCells);
+/// Where the time of one load goes, in this process: reading the file into a
+/// mesh, preparing the scene, and the first frame (cold caches, first
+/// allocations), plus the median frame of a turntable after it.
+struct Phases {
+  bool ok = false;
+  double readSeconds = 0.0;
+  double prepareSeconds = 0.0;
+  double firstFrameMs = 0.0;
+  double frameMs = 0.0;
+};
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+Phases MeasurePhases(const LoadBenchOptions& options, const std::string& modelPath,
+                     const std::string& reader) {
+  Phases phases;
+  LoadOptions load;
+  load.importerOnly = reader == "assimp";
+  Clock::time_point start = Clock::now();
+  Loaded<Mesh> mesh = LoadModelFile(modelPath, load);
+  if (!mesh.Ok()) return phases;
+  phases.readSeconds = SecondsSince(start);
+  start = Clock::now();
+  const Scene scene = PrepareScene(std::move(mesh.Value()));
+  phases.prepareSeconds = SecondsSince(start);
+  DepthBuffer depth;
+  CellBuffer cells;
+  depth.Resize(options.widthCells, options.heightCells);
+  cells.Resize(options.widthCells, options.heightCells);
+  RenderOptions render;
+  render.keepDepth = false;
+  Renderer renderer;
+  const Camera camera = FitCamera(scene, DefaultView(scene.diagonalModelUnits),
+                                  options.widthCells, options.heightCells, 2.0);
+  start = Clock::now();
+  renderer.Render(scene, camera, render, depth, cells);
+  phases.firstFrameMs = SecondsSince(start) * 1e3;
+  phases.frameMs = MedianTurntableFrameMs(scene, options.widthCells, options.heightCells);
+  phases.ok = true;
+  return phases;
+}
+
+/// Runs work() in a forked child and gives back the value it returns (a
+/// trivially copyable struct), or nullopt when the child failed. The bench
+/// process itself stays small: a child inherits its parent's resident size
+/// as the start of its peak (ru_maxrss survives fork and exec), so big
+/// allocations here would show in every child's peak.
+template <typename Result, typename Work>
+std::optional<Result> InChild(Work work) {
+  int fds[2];
+  if (pipe(fds) != 0) return std::nullopt;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fds[0]);
+    const Result result = work();
+    const bool written = write(fds[1], &result, sizeof result) == sizeof result;
+    _exit(written ? 0 : 1);
+  }
+  close(fds[1]);
+  Result result{};
+  const bool got = pid > 0 && read(fds[0], &result, sizeof result) == sizeof result;
+  close(fds[0]);
+  int status = 0;
+  if (pid > 0) waitpid(pid, &status, 0);
+  if (!got || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return std::nullopt;
+  return result;
 }
 
 std::string WriteModel(const std::string& directory, size_t triangles, const std::string& format) {
@@ -93,27 +156,28 @@ int RunLoadBench(const LoadBenchOptions& options) {
     return 1;
   }
   std::printf(
-      "| model | reader | file MB | load + first frame, wall s | CPU s | peak MB | frame ms, %dx%d "
-      "|\n",
+      "| model | reader | file MB | load + first frame, wall s | CPU s | peak MB | read s | "
+      "prepare s | first frame ms | frame ms, %dx%d |\n",
       options.widthCells, options.heightCells);
-  std::printf("| --- | --- | --- | --- | --- | --- | --- |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const size_t triangles : options.triangleCounts) {
     for (const std::string& format : options.formats) {
-      const std::string path = WriteModel(directory, triangles, format);
-      if (path.empty()) {
+      const std::string path = directory + "/sphere-" + std::to_string(triangles) + "." + format;
+      const auto written =
+          InChild<bool>([&] { return !WriteModel(directory, triangles, format).empty(); });
+      if (!written.value_or(false)) {
         std::cerr << "termshade bench load: cannot write a model into the models' folder\n";
         return 1;
       }
       // Readers take turns within each repeat, so both see the same machine.
       const size_t readerCount = options.readers.size();
       std::vector<std::vector<double>> wall(readerCount), cpu(readerCount), peak(readerCount);
+      std::vector<bool> failed(readerCount, false);
       for (int r = 0; r < options.repeats; ++r) {
         for (size_t k = 0; k < readerCount; ++k) {
+          if (failed[k]) continue;
           const ChildRun run = RunRenderChild(options, path, options.readers[k]);
-          if (!run.ok) {
-            std::cerr << "termshade bench load: rendering " << path << " failed\n";
-            return 1;
-          }
+          failed[k] = !run.ok;  // e.g. over the memory budget: reported in the row
           wall[k].push_back(run.wallSeconds);
           cpu[k].push_back(run.cpuSeconds);
           peak[k].push_back(run.peakMegabytes);
@@ -121,18 +185,30 @@ int RunLoadBench(const LoadBenchOptions& options) {
       }
       const double fileMb =
           static_cast<double>(std::filesystem::file_size(path, error)) / (1024.0 * 1024.0);
-      const double frameMs = MedianFrameMs(options, path);
       for (size_t k = 0; k < readerCount; ++k) {
-        std::printf("| %zuk triangles, %s | %s | %.0f | %.2f | %.2f | %.0f | %.2f |\n",
-                    triangles / 1000, format.c_str(), options.readers[k].c_str(), fileMb,
-                    Median(wall[k]), Median(cpu[k]), Median(peak[k]), frameMs);
+        const std::string model = std::to_string(triangles / 1000) + "k triangles, " + format;
+        const Phases phases =
+            failed[k] ? Phases{}
+                      : InChild<Phases>([&] {
+                          return MeasurePhases(options, path, options.readers[k]);
+                        }).value_or(Phases{});
+        if (failed[k] || !phases.ok) {
+          std::printf("| %s | %s | %.0f | failed (see the message above) | | | | | | |\n",
+                      model.c_str(), options.readers[k].c_str(), fileMb);
+          continue;
+        }
+        std::printf("| %s | %s | %.0f | %.2f | %.2f | %.0f | %.2f | %.2f | %.1f | %.2f |\n",
+                    model.c_str(), options.readers[k].c_str(), fileMb, Median(wall[k]),
+                    Median(cpu[k]), Median(peak[k]), phases.readSeconds, phases.prepareSeconds,
+                    phases.firstFrameMs, phases.frameMs);
       }
       std::fflush(stdout);
     }
   }
   std::printf(
-      "\nmedians of %d runs of `termshade render MODEL --size %dx%d --reader R` (a child process "
-      "each) and of 20 frames in-process; models in %s\n",
+      "\nwall, CPU and peak: medians of %d runs of `termshade render MODEL --size %dx%d --reader "
+      "R` (a child process each); read, prepare and first frame: one load in-process; frame: "
+      "median of 20 frames in-process; models in %s\n",
       options.repeats, options.widthCells, options.heightCells, directory.c_str());
   return 0;
 }

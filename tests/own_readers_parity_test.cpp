@@ -2,13 +2,17 @@
 // same frame and the same face seen in every cell, on every such test model
 // (tests/models, and the Assimp test models when installed).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "io/MeshExport.h"
 #include "io/ModelLoader.h"
 #include "io/OwnReaders.h"
+#include "io/SceneGenerators.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -64,6 +68,28 @@ TEST(OwnReadersParity, SameFramesAsAssimpOnEveryTestModel) {
   }
   EXPECT_GE(compared, 1);
   std::printf("compared %d models\n", compared);
+}
+
+// A bigger, generated model (the kind `bench load` measures) in all three
+// formats: both paths give the same mesh sizes and the same frames.
+TEST(OwnReadersParity, GeneratedSphereInEveryFormat) {
+  const fs::path folder = fs::temp_directory_path() / ("termshade-parity-" + std::to_string(getpid()));
+  fs::create_directories(folder);
+  const Mesh sphere = GenerateTriangleSphere(20'000);
+  for (const char* format : {"obj", "stl", "ply"}) {
+    const std::string path = (folder / (std::string("sphere.") + format)).string();
+    std::ofstream(path, std::ios::binary) << ExportMesh(sphere, *ExportFormatFromPath(path));
+    LoadOptions own, reference;
+    reference.importerOnly = true;
+    Loaded<Mesh> ours = LoadModelFile(path, own);
+    Loaded<Mesh> imported = LoadModelFile(path, reference);
+    ASSERT_TRUE(ours.Ok() && imported.Ok()) << path;
+    EXPECT_EQ(ours.Value().FaceCount(), sphere.FaceCount()) << path;
+    EXPECT_EQ(ours.Value().FaceCount(), imported.Value().FaceCount()) << path;
+    EXPECT_EQ(ours.Value().verticesFile.size(), imported.Value().verticesFile.size()) << path;
+    EXPECT_EQ(FacesAndGlyphs(ours.Value()), FacesAndGlyphs(imported.Value())) << path;
+  }
+  fs::remove_all(folder);
 }
 
 }  // namespace

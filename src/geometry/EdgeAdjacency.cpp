@@ -2,11 +2,15 @@
 
 #include <algorithm>
 
+#include "geometry/HugePages.h"
+
 namespace termshade {
 
 EdgeAdjacency::EdgeAdjacency(const Mesh& mesh) {
   const size_t vertexCount = mesh.verticesFile.size();
   // Step 1: how many edges start at each smaller vertex.
+  starts_.reserve(vertexCount + 1);
+  AdviseHugePages(starts_);
   starts_.assign(vertexCount + 1, 0);
   auto forEachFaceEdge = [&mesh](auto&& use) {
     for (uint32_t face = 0; face < mesh.FaceCount(); ++face) {
@@ -21,6 +25,8 @@ EdgeAdjacency::EdgeAdjacency(const Mesh& mesh) {
   for (size_t v = 0; v < vertexCount; ++v) starts_[v + 1] += starts_[v];
 
   // Step 2: place each use in its vertex's range.
+  uses_.reserve(starts_.back());
+  AdviseHugePages(uses_);
   uses_.resize(starts_.back());
   std::vector<uint32_t> filled(starts_.begin(), starts_.end() - 1);
   forEachFaceEdge([&](uint32_t a, uint32_t b, uint32_t face, bool hidden) {

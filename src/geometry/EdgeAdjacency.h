@@ -23,6 +23,9 @@ class EdgeAdjacency {
  public:
   explicit EdgeAdjacency(const Mesh& mesh);
 
+  /// Face edges in all (each undirected edge once per face that has it).
+  size_t UseCount() const { return uses_.size(); }
+
   /// Calls visit(lowVertex, uses) once per undirected edge, in (low, high)
   /// order; the uses are sorted by face.
   template <typename Visit>

@@ -8,6 +8,7 @@
 
 #include "geometry/Mat4.h"
 #include "geometry/Mesh.h"
+#include "geometry/SceneEdges.h"
 #include "geometry/UpAxis.h"
 
 namespace termshade {
@@ -27,13 +28,6 @@ struct FacePlane {
   bool FacesPoint(Vec3 pWorld) const { return Dot(normal, pWorld) > offset; }
 };
 
-/// A drawable line for wire-frame mode; face is the first face that has it
-/// (or UINT32_MAX for a free segment).
-struct SceneEdge {
-  std::array<uint32_t, 2> vertices{};
-  uint32_t face = 0;
-};
-
 /// A model made ready for rendering from any view: turned so its up axis is
 /// +z and centered on its bounding box (world space, SPEC 1), closed parts
 /// turned outward, faces triangulated once, unit normals and planes known.
@@ -47,7 +41,6 @@ struct Scene {
   std::vector<SceneTriangle> triangles;
   std::vector<FacePlane> facePlanesWorld;    ///< per face, world space
   std::vector<uint32_t> faceTriangleStarts;  ///< FaceCount() + 1 entries into triangles
-  std::vector<SceneEdge> edges;
   Mesh mesh;  ///< the source model (closed parts outward), for exact references and export
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex
@@ -56,6 +49,11 @@ struct Scene {
   bool convexClosedSolid = false;
 
   size_t FaceCount() const { return facePlanesWorld.size(); }
+  /// The lines wire mode draws (SceneEdges.h), built from mesh on first use.
+  const std::vector<SceneEdge>& Edges() const { return edges_.Get(mesh); }
+
+ private:
+  LazySceneEdges edges_;
 };
 
 /// Turns, centers, orients, triangulates and measures a mesh. The up axis is

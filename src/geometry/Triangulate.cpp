@@ -143,6 +143,14 @@ class EarClipper {
 }  // namespace
 
 void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangle>& trianglesOut) {
+  // A triangle of three distinct consecutive corners: what the ear clipper
+  // below gives for it (its one ear, emitted from the last corner), without
+  // the allocations.
+  if (corners.size() == 3 && corners[0] != corners[1] && corners[1] != corners[2] &&
+      corners[2] != corners[0]) {
+    if (IsFinite(NewellNormal(corners))) trianglesOut.push_back({2, 0, 1});
+    return;
+  }
   const std::vector<uint32_t> kept = DropConsecutiveDuplicates(corners);
   if (kept.size() < 3) return;
   Vec3 normal = NewellNormal(kept.size(), [&](size_t i) { return corners[kept[i]]; });

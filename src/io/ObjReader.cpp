@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "geometry/DropUnusedVertices.h"
+#include "geometry/HugePages.h"
 
 namespace termshade {
 namespace {
@@ -143,6 +144,10 @@ class ObjParser {
     mesh_.faceStarts.reserve(counts.faces + 1);
     mesh_.faceCorners.reserve(counts.corners);
     mesh_.edgeHidden.reserve(counts.corners);
+    AdviseHugePages(mesh_.verticesFile);
+    AdviseHugePages(mesh_.faceStarts);
+    AdviseHugePages(mesh_.faceCorners);
+    AdviseHugePages(mesh_.edgeHidden);
   }
 
   bool Line(const termshade::Line& line) {

@@ -1,5 +1,6 @@
 #include "io/OwnReaders.h"
 
+#include "geometry/FirstUseOrder.h"
 #include "geometry/WeldVertices.h"
 #include "io/BinaryStlReader.h"
 #include "io/ObjReader.h"
@@ -29,7 +30,10 @@ std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std:
   Mesh& mesh = read->Value();
   mesh.name = displayName;
   mesh.upAxisFile = format == "stl" ? UpAxis::kPlusZ : UpAxis::kPlusY;
-  if (format != "stl") WeldExactPositions(mesh);  // the STL reader welds as it reads
+  if (format != "stl") {  // the STL reader welds as it reads, in first-use order
+    WeldExactPositions(mesh);
+    NumberVerticesByFirstUse(mesh);
+  }
   return read;
 }
 

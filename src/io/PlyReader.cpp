@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/DropUnusedVertices.h"
+#include "geometry/HugePages.h"
 
 namespace termshade {
 namespace {
@@ -317,6 +318,8 @@ std::optional<LoadError> ReadVertices(const Element& element, Reader& reader) {
   if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0) {
     return LoadError{reader.path, 0, 0, "the vertex element has no x, y and z properties"};
   }
+  reader.mesh.verticesFile.reserve(element.count);
+  AdviseHugePages(reader.mesh.verticesFile);
   reader.mesh.verticesFile.resize(element.count);
   for (uint64_t v = 0; v < element.count; ++v) {
     double coordinates[3] = {0, 0, 0};
@@ -351,6 +354,9 @@ std::optional<LoadError> ReadFaces(const Element& element, Reader& reader) {
   reader.mesh.faceStarts.reserve(element.count + 1);
   reader.mesh.faceCorners.reserve(element.count * 3);
   reader.mesh.edgeHidden.reserve(element.count * 3);
+  AdviseHugePages(reader.mesh.faceStarts);
+  AdviseHugePages(reader.mesh.faceCorners);
+  AdviseHugePages(reader.mesh.edgeHidden);
   std::vector<uint32_t> corners;
   for (uint64_t f = 0; f < element.count; ++f) {
     for (size_t p = 0; p < element.properties.size(); ++p) {

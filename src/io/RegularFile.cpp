@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "geometry/HugePages.h"
+
 namespace termshade {
 namespace {
 
@@ -95,7 +97,10 @@ Loaded<std::string> ReadRegularFile(
   const auto size = static_cast<size_t>(info.st_size);
   if (auto refusal = refuseSize(size)) return LoadError{path, 0, 0, std::move(*refusal)};
   // Step 3: the bytes.
-  std::string text(size, '\0');
+  std::string text;
+  text.reserve(size);
+  AdviseHugePages(text.data(), size);
+  text.resize(size);
   bool cancelled = false;
   if (!ReadFully(fd.Get(), text, size, cancel, cancelled)) {
     if (cancelled) return Cancelled(path);

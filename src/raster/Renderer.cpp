@@ -219,7 +219,7 @@ int Renderer::DrawEdges(const Scene& scene, const Camera& camera, const RenderOp
                         DepthBuffer& depth, CellBuffer& cells) {
   const auto topLevel = static_cast<int16_t>(options.ramp.LevelCount() - 1);
   int drawn = 0;
-  for (const SceneEdge& edge : scene.edges) {
+  for (const SceneEdge& edge : scene.Edges()) {
     Vec3 aEye = TransformPoint(eyeFromWorld_, scene.verticesWorld[edge.vertices[0]]);
     Vec3 bEye = TransformPoint(eyeFromWorld_, scene.verticesWorld[edge.vertices[1]]);
     if (!IsFinite(aEye) || !IsFinite(bEye) || !ClipSegment(aEye, bEye, clipPlanes_)) continue;
