@@ -156,6 +156,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
                   "(from NO_COLOR, COLORTERM and terminfo; the viewer's default; render's is 256)")
       ->check(CLI::IsMember({"none", "256", "truecolor", "24bit", "auto"}));
   command.add_flag("--mono", options.mono, "no colour: --color none");
+  command
+      .add_option("--lod", options.lod,
+                  "level of detail: auto (a simplified copy of a big model where its triangles "
+                  "are far below a sample; the viewer's default) or off (exact; render's default)")
+      ->check(CLI::IsMember({"auto", "off"}));
 }
 
 int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
@@ -176,6 +181,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.render.cullBackFaces = !look.noCull;
   if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   viewer.upAxis = look.upAxis;
+  viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
   viewer.theta = look.theta;
   viewer.phi = look.phi;
   return termshade::RunViewer(viewer);
