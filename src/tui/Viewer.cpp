@@ -85,6 +85,7 @@ class EventLoop {
     while (!state_.QuitRequested() && !state_.StartError()) {
       StartRequestedLoad();
       if (dirty_) Draw();
+      UpdateDetailJob();
       // Step 1: sleep until input, a signal, a finished load, or the next
       // turntable frame (or a look at the load's progress).
       int timeoutMs = -1;
