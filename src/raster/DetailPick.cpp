@@ -3,7 +3,7 @@
 namespace termshade {
 
 DetailPick PickDetail(const DetailLevels* levels, const Scene& exact, const Camera& camera,
-                      const RenderOptions& options) {
+                      const RenderOptions& options, double samplesPerTriangle) {
   if (levels == nullptr || levels->levels.empty() || options.method == Method::kWire) {
     return {&exact, 0};
   }
@@ -11,6 +11,7 @@ DetailPick PickDetail(const DetailLevels* levels, const Scene& exact, const Came
   DetailTarget target;
   target.samplesAcross = grid.across;
   target.samplesDown = grid.down;
+  target.samplesPerTriangle = samplesPerTriangle;
   const size_t level = ChooseDetailLevel(*levels, exact, camera, target);
   return {&DetailScene(*levels, exact, level), level};
 }

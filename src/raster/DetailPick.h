@@ -19,6 +19,7 @@ struct DetailPick {
 /// mode's, or the variant's); the exact scene when levels is null or empty,
 /// or for the wire frame (whose lines are the model's own edges).
 DetailPick PickDetail(const DetailLevels* levels, const Scene& exact, const Camera& camera,
-                      const RenderOptions& options);
+                      const RenderOptions& options,
+                      double samplesPerTriangle = DetailTarget{}.samplesPerTriangle);
 
 }  // namespace termshade
