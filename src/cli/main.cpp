@@ -297,6 +297,13 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(0.5, 600.0));
   terminalCommand->add_flag("!--no-strace", terminalBench.traceWrites,
                             "do not count write() calls");
+  terminalCommand->add_option("--lod", terminalBench.lod, "the viewer's --lod: auto or off")
+      ->check(CLI::IsMember({"auto", "off"}));
+  terminalCommand
+      ->add_option("--settle-seconds", terminalBench.settleSeconds,
+                   "wait after the first screen before measuring, for a big model's load and "
+                   "levels of detail (default 0)")
+      ->check(CLI::Range(0.0, 600.0));
 
   termshade::MethodsBenchOptions methodsBench;
   CLI::App* methodsCommand = benchCommand->add_subcommand(
