@@ -7,6 +7,7 @@
 #include "geometry/FitCamera.h"
 #include "geometry/LevelOfDetail.h"
 #include "io/SceneGenerators.h"
+#include "raster/DetailPick.h"
 #include "raster/Renderer.h"
 #include "support/TestSupport.h"
 
@@ -175,6 +176,26 @@ TEST(LevelOfDetail, ADistantLevelDrawsNearlyTheSameFrame) {
   EXPECT_LT(coverageDiffers, covered / 100);
   EXPECT_LT(levelOff, covered / 100);
   EXPECT_LT(std::sqrt(squared / covered), 0.5);  // RMS shade difference, in ramp levels
+}
+
+TEST(LevelOfDetail, WithoutLevelsOrInWireFrameTheExactSceneIsDrawn) {
+  const Scene& exact = Sphere200k();
+  const DetailLevels& levels = Sphere200kLevels();
+  ViewParams view = DefaultView(exact.diagonalModelUnits);
+  view.rho *= 8.0;  // far: a level would be chosen
+  const Camera camera = FitCamera(exact, view, 160, 48, 2.0);
+  RenderOptions options;
+  EXPECT_EQ(PickDetail(nullptr, exact, camera, options).scene, &exact);
+  EXPECT_EQ(PickDetail(nullptr, exact, camera, options).level, 0U);
+  const DetailPick far = PickDetail(&levels, exact, camera, options);
+  EXPECT_GT(far.level, 0U);
+  EXPECT_EQ(far.scene, &levels.levels[far.level - 1].scene);
+  options.method = Method::kWire;
+  EXPECT_EQ(PickDetail(&levels, exact, camera, options).scene, &exact);
+  // Empty levels (a small model): exact.
+  const DetailLevels none;
+  options.method = Method::kZBuffer;
+  EXPECT_EQ(PickDetail(&none, exact, camera, options).scene, &exact);
 }
 
 TEST(LevelOfDetail, ModeNames) {
