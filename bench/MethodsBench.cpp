@@ -186,8 +186,8 @@ std::vector<double> ReferenceLevels(const Scene& scene, const Camera& camera,
 
 struct CaseResult {
   double medianMs = 0.0;
-  double ssim = 0.0;              ///< blurred SSIM against the exact image (SPEC 12), views 0 and 1
-  double meanTriangles = 0.0;     ///< of the scene drawn
+  double ssim = 0.0;           ///< blurred SSIM against the exact image (SPEC 12), views 0 and 1
+  double meanTriangles = 0.0;  ///< of the scene drawn
   double faceError = 0.0;  ///< share of compared cells; < 0 when not measured
   double shadeErrorLevels = 0.0;
   int compared = 0;
@@ -206,7 +206,8 @@ struct MethodTiming {
 // draws the turntable once untimed (warming the caches the previous method
 // cooled), then times it. One renderer and one pair of buffers serve every
 // method, as in the viewer.
-std::vector<MethodTiming> TimeMethods(const NamedScene& named, const std::vector<MethodCase>& methods,
+std::vector<MethodTiming> TimeMethods(const NamedScene& named,
+                                      const std::vector<MethodCase>& methods,
                                       const std::vector<Camera>& cameras,
                                       const MethodsBenchOptions& options) {
   Renderer renderer;
@@ -272,10 +273,9 @@ CaseResult Measure(const NamedScene& named, const MethodCase& method,
     if (f < exactImages.size()) {
       InkImage exact = exactImages[f];
       for (float& p : exact.pixels) p = static_cast<float>(p * inkRange);
-      result.ssim += CompareImages(exact,
-                                   GlyphImage(cells, DefaultInkTable(), false), inkRange)
-                         .ssim /
-                     exactImages.size();
+      result.ssim +=
+          CompareImages(exact, GlyphImage(cells, DefaultInkTable(), false), inkRange).ssim /
+          exactImages.size();
     }
     // A level's faces are its own: the face error compares the exact scene's faces.
     if (method.measuresFaces && !method.lodSamplesPerTriangle) {
@@ -369,8 +369,7 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
       const double vsDefault = timings[m].vsDefault;
       std::printf("%-16s %-30s %9.4f %8.2f %9.2f %10s %9.3f %7.4f %9.0f\n", named.name.c_str(),
                   method.name.c_str(), result.medianMs, vsDefault, nsPerCell, faceText,
-                  result.shadeErrorLevels, result.ssim,
-                  result.meanTriangles);
+                  result.shadeErrorLevels, result.ssim, result.meanTriangles);
       csv << '"' << named.name << "\",\"" << method.name << "\"," << named.scene.triangles.size()
           << ',' << result.medianMs << ',' << vsDefault << ',' << nsPerCell << ','
           << (result.faceError >= 0 ? std::to_string(result.faceError) : "") << ','

@@ -142,9 +142,9 @@ TEST(LevelOfDetail, TheLevelShrinksAsTheModelGetsSmallerOnScreen) {
                    6.0 * TrianglesNeeded(exact, camera, target));
   // The eye inside the bounding sphere: exact.
   view.rho = exact.radiusModelUnits;
-  EXPECT_EQ(ChooseDetailLevel(levels, exact, FitCameraAt(exact, view, defaultRho, 160, 48, 2.0),
-                              target),
-            0U);
+  EXPECT_EQ(
+      ChooseDetailLevel(levels, exact, FitCameraAt(exact, view, defaultRho, 160, 48, 2.0), target),
+      0U);
 }
 
 TEST(LevelOfDetail, ADistantLevelDrawsNearlyTheSameFrame) {

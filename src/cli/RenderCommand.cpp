@@ -186,8 +186,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));
     if (const auto problem = openOutput()) return outputFailed(*problem);
     if (const auto problem = WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions,
-                                         *format,
-                                         ResolveColourMode(*colourMode), sink)) {
+                                         *format, ResolveColourMode(*colourMode), sink)) {
       return outputFailed(*problem);
     }
   }

@@ -24,7 +24,7 @@ constexpr double kFinAgreement = 0.5;
 // vertices at the same position (so seams and unwelded files collapse too),
 // and one face touching each such vertex.
 struct Source {
-  std::vector<float> positions;  ///< xyz per vertex of the exact scene
+  std::vector<float> positions;   ///< xyz per vertex of the exact scene
   std::vector<uint32_t> indices;  ///< 3 per exact triangle, position-joined
   std::vector<uint32_t> vertexFace;
   double scaleModelUnits = 0.0;  ///< meshoptimizer's extent: relative error x scale = model units
@@ -36,9 +36,9 @@ Source MakeSource(const Scene& exact) {
   source.positions.reserve(vertexCount * 3);
   for (const Vec3& p : exact.verticesWorld) {
     const Vec3 finite = IsFinite(p) ? p : Vec3{};
-    source.positions.insert(source.positions.end(), {static_cast<float>(finite.x),
-                                                     static_cast<float>(finite.y),
-                                                     static_cast<float>(finite.z)});
+    source.positions.insert(
+        source.positions.end(),
+        {static_cast<float>(finite.x), static_cast<float>(finite.y), static_cast<float>(finite.z)});
   }
   std::vector<uint32_t> plain;
   plain.reserve(exact.triangles.size() * 3);
@@ -133,8 +133,7 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
   const bool coloured = !exact.mesh.faceColors.empty();
   for (size_t t = 0; t < triangleCount; ++t) {
     const uint32_t* corners = &indices[3 * t];
-    std::array<uint32_t, 3> local{newIndex[corners[0]], newIndex[corners[1]],
-                                        newIndex[corners[2]]};
+    std::array<uint32_t, 3> local{newIndex[corners[0]], newIndex[corners[1]], newIndex[corners[2]]};
     const Vec3 a = scene.verticesWorld[local[0]], b = scene.verticesWorld[local[1]],
                c = scene.verticesWorld[local[2]];
     // Collapses along a row of the source's vertices can leave a fin: a sliver
@@ -144,8 +143,8 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     const double longest = std::max({Dot(b - a, b - a), Dot(c - b, c - b), Dot(a - c, a - c)});
     Vec3 normal = Normalized(cross);
     auto [sourceFace, agreement] = SourceFace(exact, source, corners, normal);
-    if (normal == Vec3{} || (Length(cross) < kFinHeight * longest &&
-                             std::abs(agreement) < kFinAgreement)) {
+    if (normal == Vec3{} ||
+        (Length(cross) < kFinHeight * longest && std::abs(agreement) < kFinAgreement)) {
       continue;
     }
     // A collapse that folded a triangle over (rare) turns it inside out:
@@ -200,15 +199,15 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
     float stepError = 0.0F;
     const auto budget = static_cast<float>(options.maxRelativeError - relativeError);
     // (meshopt_simplifySloppy is 3x faster here but twice the error, and stalls near 20k.)
-    size_t indexCount = meshopt_simplify(simplified.data(), current.data(), current.size(),
-                                         source.positions.data(), vertexCount, sizeof(float) * 3,
-                                         target * 3, budget, 0, &stepError);
+    size_t indexCount =
+        meshopt_simplify(simplified.data(), current.data(), current.size(), source.positions.data(),
+                         vertexCount, sizeof(float) * 3, target * 3, budget, 0, &stepError);
     // Step 2: stop where the error budget (or the topology) stops the collapse.
     if (indexCount == 0 || indexCount > current.size() * 3 / 4) break;
     relativeError += stepError;
     simplified.resize(indexCount);
-    result.levels.push_back(MakeLevel(exact, source, simplified,
-                                      relativeError * source.scaleModelUnits, newIndex));
+    result.levels.push_back(
+        MakeLevel(exact, source, simplified, relativeError * source.scaleModelUnits, newIndex));
     current.swap(simplified);
     simplified.resize(current.size());
   }

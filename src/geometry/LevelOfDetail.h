@@ -36,7 +36,7 @@ struct DetailLevels {
 };
 
 struct DetailBuildOptions {
-  double reduction = 4.0;            ///< triangles of one level / the next
+  double reduction = 4.0;             ///< triangles of one level / the next
   size_t minSourceTriangles = 20000;  ///< smaller scenes get no levels
   size_t minTriangles = 1000;         ///< no level below this
   /// Largest deviation a level may have, relative to the model's extent.

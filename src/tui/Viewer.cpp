@@ -120,8 +120,8 @@ class EventLoop {
       }
     }
     // A worker still reading a file is asked to stop and left to end alone.
-    outcome.abandonedLoad = abandonedLoad_ || (job_ && job_->Abandoned()) ||
-                            (detailJob_ && !detailJob_->Finished());
+    outcome.abandonedLoad =
+        abandonedLoad_ || (job_ && job_->Abandoned()) || (detailJob_ && !detailJob_->Finished());
     if (cancelledStart_) outcome.cancelledStart = cancelledName_;
     job_.reset();
     detailJob_.reset();
@@ -377,7 +377,8 @@ class EventLoop {
     const Camera camera = state_.CameraFor(cols, frameRows);
     const DetailPick pick =
         PickDetail(state_.Levels(), state_.CurrentScene(), camera, state_.Render());
-    const RenderStats stats = renderer_.Render(*pick.scene, camera, state_.Render(), depth_, cells_);
+    const RenderStats stats =
+        renderer_.Render(*pick.scene, camera, state_.Render(), depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     ++framesDrawn_;
     CellColourMap colours(pick.scene->mesh.faceColors, levelCount, state_.Colour());

@@ -74,7 +74,9 @@ class ViewerState {
   const std::shared_ptr<const Scene>& SharedScene() const { return scene_; }
   DetailMode Detail() const { return detail_; }
   /// The current scene's levels of detail, once built (null before, or when off).
-  const DetailLevels* Levels() const { return detail_ == DetailMode::kAuto ? levels_.get() : nullptr; }
+  const DetailLevels* Levels() const {
+    return detail_ == DetailMode::kAuto ? levels_.get() : nullptr;
+  }
   /// True when levels should be built for the scene shown: auto, a big
   /// enough model, none built yet.
   bool WantsLevels() const;
