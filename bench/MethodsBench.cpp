@@ -21,7 +21,9 @@
 #include "geometry/ViewingTransform.h"
 #include "io/ModelLoader.h"
 #include "io/SceneGenerators.h"
+#include "raster/DetailPick.h"
 #include "raster/FrameError.h"
+#include "raster/FrameFidelity.h"
 #include "raster/Renderer.h"
 
 namespace termshade {
@@ -30,10 +32,19 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 struct MethodCase {
+  MethodCase(std::string name, RenderOptions options, bool measuresFaces = true,
+             bool plotted = true, std::optional<double> lodSamplesPerTriangle = std::nullopt)
+      : name(std::move(name)),
+        options(std::move(options)),
+        measuresFaces(measuresFaces),
+        plotted(plotted),
+        lodSamplesPerTriangle(lodSamplesPerTriangle) {}
   std::string name;
   RenderOptions options;
   bool measuresFaces = true;  ///< supersampled variants have no single sample per cell
   bool plotted = true;        ///< the noise control repeats the default: table only
+  /// Set: a level of detail where the mean projected triangle reaches this many samples.
+  std::optional<double> lodSamplesPerTriangle;
 };
 
 std::vector<MethodCase> Methods() {
@@ -72,6 +83,9 @@ std::vector<MethodCase> Methods() {
               v.samples = {4, 4};
             }),
        false},
+      {"lod auto (1/4 sample a tri)", with(Method::kZBuffer, same), true, true,
+       DetailTarget{}.samplesPerTriangle},
+      {"lod coarse (1 sample a tri)", with(Method::kZBuffer, same), true, true, 1.0},
   };
 }
 
@@ -79,7 +93,17 @@ struct NamedScene {
   std::string name;
   Scene scene;
   bool nearlyHeadOn = false;  ///< views within a few degrees of the +x axis, not a turntable
+  DetailLevels levels{};      ///< built by Scenes
+  double levelsBuildSeconds = 0.0;
 };
+
+// The scene a method draws in this view: the exact one, or its level of detail.
+const Scene& DrawnScene(const NamedScene& named, const MethodCase& method, const Camera& camera) {
+  if (!method.lodSamplesPerTriangle) return named.scene;
+  return *PickDetail(&named.levels, named.scene, camera, method.options,
+                     *method.lodSamplesPerTriangle)
+              .scene;
+}
 
 Mesh CrossingQuads() {
   Mesh mesh;
@@ -116,6 +140,12 @@ std::vector<NamedScene> Scenes(const std::string& dataDirectory) {
   scenes.push_back({"plates gap 1e-4", PrepareScene(ParallelPlates(1e-4)), true});
   scenes.push_back({"sphere 20k tris", PrepareScene(GenerateSphere(100, 100))});
   scenes.push_back({"sphere 200k tris", PrepareScene(GenerateSphere(317, 317))});
+  scenes.push_back({"sphere 2M tris", PrepareScene(GenerateTriangleSphere(2000000))});
+  for (NamedScene& named : scenes) {
+    const auto start = Clock::now();
+    named.levels = BuildDetailLevels(named.scene);
+    named.levelsBuildSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  }
   return scenes;
 }
 
@@ -156,6 +186,8 @@ std::vector<double> ReferenceLevels(const Scene& scene, const Camera& camera,
 
 struct CaseResult {
   double medianMs = 0.0;
+  double ssim = 0.0;           ///< blurred SSIM against the exact image (SPEC 12), views 0 and 1
+  double meanTriangles = 0.0;  ///< of the scene drawn
   double faceError = 0.0;  ///< share of compared cells; < 0 when not measured
   double shadeErrorLevels = 0.0;
   int compared = 0;
@@ -174,7 +206,8 @@ struct MethodTiming {
 // draws the turntable once untimed (warming the caches the previous method
 // cooled), then times it. One renderer and one pair of buffers serve every
 // method, as in the viewer.
-std::vector<MethodTiming> TimeMethods(const Scene& scene, const std::vector<MethodCase>& methods,
+std::vector<MethodTiming> TimeMethods(const NamedScene& named,
+                                      const std::vector<MethodCase>& methods,
                                       const std::vector<Camera>& cameras,
                                       const MethodsBenchOptions& options) {
   Renderer renderer;
@@ -196,8 +229,9 @@ std::vector<MethodTiming> TimeMethods(const Scene& scene, const std::vector<Meth
       turnMs.clear();
       for (int pass = 0; pass < 2; ++pass) {
         for (const Camera& camera : cameras) {
-          const auto start = Clock::now();
-          renderer.Render(scene, camera, methods[m].options, depth, cells);
+          const auto start = Clock::now();  // choosing the level is part of the frame
+          renderer.Render(DrawnScene(named, methods[m], camera), camera, methods[m].options, depth,
+                          cells);
           const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
           if (pass > 0) turnMs.push_back(ms);
         }
@@ -220,7 +254,8 @@ std::vector<MethodTiming> TimeMethods(const Scene& scene, const std::vector<Meth
 // Face and shade error of one method on every frame.
 CaseResult Measure(const NamedScene& named, const MethodCase& method,
                    const std::vector<std::vector<double>>& referenceLevels,
-                   const std::vector<Camera>& cameras, const MethodsBenchOptions& options) {
+                   const std::vector<InkImage>& exactImages, const std::vector<Camera>& cameras,
+                   const MethodsBenchOptions& options) {
   Renderer renderer;
   CellBuffer cells(options.widthCells, options.heightCells);
   DepthBuffer depth;
@@ -230,9 +265,20 @@ CaseResult Measure(const NamedScene& named, const MethodCase& method,
   long wrong = 0, compared = 0;
   double squared = 0.0;
   long cellsTotal = 0;
+  const double inkRange = InkRange(method.options, false, DefaultInkTable());
   for (size_t f = 0; f < cameras.size(); ++f) {
-    renderer.Render(named.scene, cameras[f], method.options, depth, cells);
-    if (method.measuresFaces) {
+    const Scene& drawn = DrawnScene(named, method, cameras[f]);
+    result.meanTriangles += static_cast<double>(drawn.triangles.size()) / cameras.size();
+    renderer.Render(drawn, cameras[f], method.options, depth, cells);
+    if (f < exactImages.size()) {
+      InkImage exact = exactImages[f];
+      for (float& p : exact.pixels) p = static_cast<float>(p * inkRange);
+      result.ssim +=
+          CompareImages(exact, GlyphImage(cells, DefaultInkTable(), false), inkRange).ssim /
+          exactImages.size();
+    }
+    // A level's faces are its own: the face error compares the exact scene's faces.
+    if (method.measuresFaces && !method.lodSamplesPerTriangle) {
       const FaceErrorReport report =
           MeasureFaceError(named.scene, cameras[f], method.options.cullBackFaces, cells);
       wrong += report.wrongCells;
@@ -245,7 +291,7 @@ CaseResult Measure(const NamedScene& named, const MethodCase& method,
       ++cellsTotal;
     }
   }
-  result.faceError = method.measuresFaces && compared > 0 ? double(wrong) / compared : -1.0;
+  result.faceError = compared > 0 ? double(wrong) / compared : -1.0;
   result.compared = static_cast<int>(compared);
   result.shadeErrorLevels = std::sqrt(squared / std::max(1L, cellsTotal));
   return result;
@@ -276,17 +322,18 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
   const std::vector<MethodCase> methods = Methods();
   std::ofstream csv(options.csvPath);
   csv << "scene,method,triangles,median_ms,time_vs_default,ns_per_cell,face_error,"
-         "shade_error_levels,compared_cells\n";
+         "shade_error_levels,compared_cells,ssim,triangles_drawn\n";
   std::printf("termshade bench methods: %dx%d cells, %d turntable frames per scene, %s\n",
               options.widthCells, options.heightCells, options.frames,
               MachineDescription().c_str());
-  std::printf("%-16s %-30s %9s %8s %9s %10s %9s\n", "scene", "method", "median ms", "x default",
-              "ns/cell", "face err %", "shade RMS");
+  std::printf("%-16s %-30s %9s %8s %9s %10s %9s %7s %9s\n", "scene", "method", "median ms",
+              "x default", "ns/cell", "face err %", "shade RMS", "SSIM", "tris");
   std::vector<PlotPoint> points;
   for (const NamedScene& named : scenes) {
     // The same frames for every method: a turntable, alternating elevations.
     std::vector<Camera> cameras;
     std::vector<std::vector<double>> referenceLevels;
+    std::vector<InkImage> exactImages;  // at ink range 1, for the first two views
     const double rho = DefaultView(named.scene.diagonalModelUnits).rho;
     RenderOptions lambert;
     lambert.shade = ShadeMode::kLambert;
@@ -298,24 +345,36 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
       cameras.push_back(FitCamera(named.scene, view, options.widthCells, options.heightCells, 2.0));
       referenceLevels.push_back(ReferenceLevels(named.scene, cameras.back(), lambert,
                                                 options.widthCells, options.heightCells));
+      if (f < 2) {
+        exactImages.push_back(ExactImage(named.scene, cameras.back(), lambert, options.widthCells,
+                                         options.heightCells, 1.0));
+      }
     }
-    const std::vector<MethodTiming> timings = TimeMethods(named.scene, methods, cameras, options);
+    if (!named.levels.levels.empty()) {
+      std::printf("%-16s levels of detail:", named.name.c_str());
+      for (const DetailLevel& level : named.levels.levels) {
+        std::printf(" %zu", level.scene.triangles.size());
+      }
+      std::printf(" triangles, built in %.2f s\n", named.levelsBuildSeconds);
+    }
+    const std::vector<MethodTiming> timings = TimeMethods(named, methods, cameras, options);
     for (size_t m = 0; m < methods.size(); ++m) {
       const MethodCase& method = methods[m];
-      CaseResult result = Measure(named, method, referenceLevels, cameras, options);
+      CaseResult result = Measure(named, method, referenceLevels, exactImages, cameras, options);
       result.medianMs = timings[m].medianMs;
       const double nsPerCell = 1e6 * result.medianMs / (options.widthCells * options.heightCells);
       char faceText[32] = "-";
       if (result.faceError >= 0)
         std::snprintf(faceText, sizeof faceText, "%.3f", 100 * result.faceError);
       const double vsDefault = timings[m].vsDefault;
-      std::printf("%-16s %-30s %9.4f %8.2f %9.2f %10s %9.3f\n", named.name.c_str(),
+      std::printf("%-16s %-30s %9.4f %8.2f %9.2f %10s %9.3f %7.4f %9.0f\n", named.name.c_str(),
                   method.name.c_str(), result.medianMs, vsDefault, nsPerCell, faceText,
-                  result.shadeErrorLevels);
+                  result.shadeErrorLevels, result.ssim, result.meanTriangles);
       csv << '"' << named.name << "\",\"" << method.name << "\"," << named.scene.triangles.size()
           << ',' << result.medianMs << ',' << vsDefault << ',' << nsPerCell << ','
           << (result.faceError >= 0 ? std::to_string(result.faceError) : "") << ','
-          << result.shadeErrorLevels << ',' << result.compared << "\n";
+          << result.shadeErrorLevels << ',' << result.compared << ',' << result.ssim << ','
+          << result.meanTriangles << "\n";
       if (method.plotted) {
         points.push_back(
             {named.name, method.name, result.medianMs, result.faceError, result.shadeErrorLevels});

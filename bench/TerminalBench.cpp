@@ -119,6 +119,24 @@ int CountBursts(const std::vector<double>& times, double gapSeconds) {
   return bursts;
 }
 
+// The gaps between the starts of bursts (frames), in milliseconds.
+std::vector<double> BurstPeriodsMs(const std::vector<double>& times, double gapSeconds) {
+  std::vector<double> starts, periods;
+  for (size_t i = 0; i < times.size(); ++i) {
+    if (i == 0 || times[i] - times[i - 1] > gapSeconds) starts.push_back(times[i]);
+  }
+  for (size_t i = 1; i < starts.size(); ++i) periods.push_back(1e3 * (starts[i] - starts[i - 1]));
+  return periods;
+}
+
+// The q-quantile (0..1) of values, nearest rank; 0 when empty.
+double Quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto rank = static_cast<size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  return values[std::min(rank, values.size() - 1)];
+}
+
 // CPU seconds (user + system) a process has used, from /proc.
 double ProcessCpuSeconds(pid_t pid) {
   std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
@@ -212,6 +230,7 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
   }
   argv.push_back(options.viewerPath);
   if (!options.modelPath.empty()) argv.push_back(options.modelPath);
+  if (!options.lod.empty()) argv.insert(argv.end(), {"--lod", options.lod});
 
   PtySession session;
   if (!session.Start(argv, options.widthCells, options.heightCells)) {
@@ -224,6 +243,7 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
     std::cerr << "termshade bench: the viewer drew nothing\n";
     return 1;
   }
+  if (options.settleSeconds > 0.0) session.ReadFor(options.settleSeconds, nullptr);
   // Step 2: arrow keys, one frame each (xterm's keypad-mode right arrow).
   std::vector<long> arrowBytes;
   arrowBytes.reserve(static_cast<size_t>(options.arrowPresses));
@@ -260,9 +280,10 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
   // Step 5: the report.
   const int turntableFrames = std::max(1, CountBursts(arrivals, 0.015));
   std::printf(
-      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, colour on\n",
+      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, colour on, lod %s\n",
       options.widthCells, options.heightCells,
-      options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str());
+      options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str(),
+      options.lod.empty() ? "default (auto)" : options.lod.c_str());
   std::printf("%-38s %12s\n", "measure", "value");
   std::printf("%-38s %12ld\n", "first frame, bytes", firstFrameBytes);
   std::printf("%-38s %12.0f\n", "per arrow key (median), bytes", Median(arrowBytes));
@@ -271,6 +292,10 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
               static_cast<double>(turntableBytes) / turntableFrames);
   std::printf("%-38s %12.1f\n", "turntable frames per second",
               turntableFrames / options.turntableSeconds);
+  // Pacing: the viewer aims at one frame every 40 ms (25 a second).
+  const std::vector<double> periods = BurstPeriodsMs(arrivals, 0.015);
+  std::printf("%-38s %5.1f %5.1f %5.1f\n", "turntable period median/p90/max, ms",
+              Quantile(periods, 0.5), Quantile(periods, 0.9), Quantile(periods, 1.0));
   if (traced) {
     const std::vector<TracedWrite> writes = ReadTrace(logPath);
     long calls = 0, bytes = 0;

@@ -16,6 +16,10 @@ struct TerminalBenchOptions {
   double turntableSeconds = 4.0;
   double idleSeconds = 10.0;
   bool traceWrites = true;  ///< count write() calls with strace, if it is installed
+  std::string lod;          ///< the viewer's --lod (auto, off); empty: its default
+  /// After the first screen, read this long before measuring: a big model
+  /// loads and its levels of detail are built.
+  double settleSeconds = 0.0;
 };
 
 /// Runs the measurement and prints the report; returns an exit code.

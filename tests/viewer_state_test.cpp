@@ -370,6 +370,13 @@ TEST(ViewerState, UpKeyCyclesTheAxisAndKeepsTheView) {
   EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusZ);
   EXPECT_EQ(ActionForChar('u'), ViewerAction::kCycleUpAxis);
   state.Apply(ViewerAction::kCycleUpAxis);
+  // Asked for, prepared on the event loop's worker: the scene shown stays until then.
+  EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusZ);
+  const std::optional<LoadRequest> request = state.TakeLoadRequest();
+  ASSERT_TRUE(request.has_value());
+  ASSERT_TRUE(request->turnTo.has_value());
+  EXPECT_EQ(*request->turnTo, UpAxis::kPlusY);
+  state.FinishLoad(*request, PrepareScene(Mesh(state.CurrentScene().mesh), *request->turnTo));
   EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusY);
   EXPECT_EQ(state.Message(), "up axis +y");
   EXPECT_EQ(state.View().theta, view.theta);
@@ -382,7 +389,10 @@ TEST(ViewerState, UpKeyCyclesTheAxisAndKeepsTheView) {
   for (size_t v = 0; v < expected.verticesWorld.size(); ++v) {
     ASSERT_EQ(state.CurrentScene().verticesWorld[v], expected.verticesWorld[v]);
   }
-  for (int i = 0; i < 6; ++i) state.Apply(ViewerAction::kCycleUpAxis);
+  for (int i = 0; i < 6; ++i) {
+    state.Apply(ViewerAction::kCycleUpAxis);
+    state.RunPendingLoad();
+  }
   EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusY);  // six presses: round the cycle
 }
 

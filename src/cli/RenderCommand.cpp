@@ -10,9 +10,11 @@
 #include <optional>
 
 #include "geometry/FitCamera.h"
+#include "geometry/LevelOfDetail.h"
 #include "io/FrameFormats.h"
 #include "io/ModelLoader.h"
 #include "io/OutputFile.h"
+#include "raster/DetailPick.h"
 #include "raster/Renderer.h"
 #include "tui/TerminalColours.h"
 
@@ -75,7 +77,8 @@ void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& 
 
 // The turntable of one model: options.frames frames, theta advancing by the
 // step. Returns the output's error, if any.
-std::optional<std::string> WriteFrames(const Scene& scene, const RenderCommandOptions& options,
+std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* levels,
+                                       const RenderCommandOptions& options,
                                        const RenderOptions& renderOptions, FrameFormat format,
                                        ColourMode colourMode, FrameSink& sink) {
   ViewParams view = DefaultView(scene.diagonalModelUnits);
@@ -87,9 +90,11 @@ std::optional<std::string> WriteFrames(const Scene& scene, const RenderCommandOp
     ViewParams frameView = view;
     frameView.theta = view.theta + frame * options.stepRadians;
     const Camera camera = FitCamera(scene, frameView, widthCells, heightCells, options.cellAspect);
-    sink.renderer.Render(scene, camera, renderOptions, sink.depth, sink.cells);
+    // --lod auto: a simplified copy where its triangles are far below a sample.
+    const Scene& drawn = *PickDetail(levels, scene, camera, renderOptions).scene;
+    sink.renderer.Render(drawn, camera, renderOptions, sink.depth, sink.cells);
     sink.text.clear();
-    AppendFrame(scene, camera, renderOptions, format, colourMode, sink);
+    AppendFrame(drawn, camera, renderOptions, format, colourMode, sink);
     const std::string& text = sink.text;
     if (sink.file) {
       if (auto problem = sink.file->Write(text)) return problem;
@@ -111,6 +116,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   const auto glyphs = ParseGlyphMode(options.glyphs);
   if (!glyphs)
     return UsageError("--glyphs must be ramp, ascii, blocks, quadrants, sextants or braille");
+  const auto detail = ParseDetailMode(options.lod.empty() ? "off" : options.lod);
+  if (!detail) return UsageError("--lod must be auto or off");
   const auto format = ParseFrameFormat(options.format);
   if (!format) return UsageError("--format must be text, ansi or json");
   if (const auto problem = ShadeRamp::Problem(options.ramp))
@@ -175,9 +182,11 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       continue;
     }
     const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
+    std::optional<DetailLevels> levels;
+    if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));
     if (const auto problem = openOutput()) return outputFailed(*problem);
-    if (const auto problem = WriteFrames(scene, options, renderOptions, *format,
-                                         ResolveColourMode(*colourMode), sink)) {
+    if (const auto problem = WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions,
+                                         *format, ResolveColourMode(*colourMode), sink)) {
       return outputFailed(*problem);
     }
   }

@@ -37,6 +37,8 @@ struct RenderCommandOptions {
   std::string colour;
   bool mono = false;  ///< --mono: --color none
   std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
+  /// --lod auto|off; empty: the command's default (render: off, exact dumps; viewer: auto).
+  std::string lod;
 };
 
 /// Frame size without --size when stdout is not a terminal (or -o is given);

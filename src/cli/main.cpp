@@ -156,6 +156,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
                   "(from NO_COLOR, COLORTERM and terminfo; the viewer's default; render's is 256)")
       ->check(CLI::IsMember({"none", "256", "truecolor", "24bit", "auto"}));
   command.add_flag("--mono", options.mono, "no colour: --color none");
+  command
+      .add_option("--lod", options.lod,
+                  "level of detail: auto (a simplified copy of a big model where its triangles "
+                  "are far below a sample; the viewer's default) or off (exact; render's default)")
+      ->check(CLI::IsMember({"auto", "off"}));
 }
 
 int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
@@ -176,6 +181,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.render.cullBackFaces = !look.noCull;
   if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   viewer.upAxis = look.upAxis;
+  viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
   viewer.theta = look.theta;
   viewer.phi = look.phi;
   return termshade::RunViewer(viewer);
@@ -291,6 +297,13 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(0.5, 600.0));
   terminalCommand->add_flag("!--no-strace", terminalBench.traceWrites,
                             "do not count write() calls");
+  terminalCommand->add_option("--lod", terminalBench.lod, "the viewer's --lod: auto or off")
+      ->check(CLI::IsMember({"auto", "off"}));
+  terminalCommand
+      ->add_option("--settle-seconds", terminalBench.settleSeconds,
+                   "wait after the first screen before measuring, for a big model's load and "
+                   "levels of detail (default 0)")
+      ->check(CLI::Range(0.0, 600.0));
 
   termshade::MethodsBenchOptions methodsBench;
   CLI::App* methodsCommand = benchCommand->add_subcommand(

@@ -9,17 +9,21 @@
 #include "geometry/Scene.h"
 #include "geometry/UpAxis.h"
 #include "io/LoadError.h"
+#include "tui/WorkerThread.h"
 
 namespace termshade {
 
 /// One model load on a worker thread: the file read and PrepareScene, with
-/// the loader's cancel flag and progress hooks. The worker never touches the
-/// terminal: it writes one byte to a pipe when done, which the event loop
-/// polls with its other descriptors.
+/// the loader's cancel flag and progress hooks; or a loaded model prepared
+/// again with another up axis. The worker never touches the terminal: it
+/// writes one byte to a pipe when done, which the event loop polls with its
+/// other descriptors.
 class LoadJob {
  public:
   /// upAxis: the viewer's --up, else each file's own (SPEC 10).
   LoadJob(std::string path, std::optional<UpAxis> upAxis);
+  /// The scene's model prepared again, turned so that `upAxis` is up.
+  LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis upAxis);
   /// Joins a finished worker; asks an unfinished one to stop and lets it end
   /// on its own (see Abandoned).
   ~LoadJob();
@@ -28,7 +32,7 @@ class LoadJob {
 
   const std::string& Path() const { return path_; }
   /// Readable once the worker has finished.
-  int ReadyFd() const { return shared_->readyPipe[0]; }
+  int ReadyFd() const { return shared_->ready.ReadFd(); }
   bool Finished() const { return shared_->finished.load(); }
   /// Share of the file read, in [0, 1], or negative while the importer has
   /// not said; 1 while the scene is being prepared.
@@ -44,19 +48,15 @@ class LoadJob {
 
  private:
   struct Shared {
-    Shared();
-    ~Shared();
-    Shared(const Shared&) = delete;
-    Shared& operator=(const Shared&) = delete;
     std::atomic<bool> cancel{false};
     std::atomic<bool> finished{false};
     std::atomic<bool> preparing{false};
     std::atomic<double> progress{-1.0};
     std::optional<Loaded<Scene>> result;  ///< written by the worker before finished
-    int readyPipe[2] = {-1, -1};
+    ReadyPipe ready;
   };
-  static void Work(const std::shared_ptr<Shared>& shared, const std::string& path,
-                   std::optional<UpAxis> upAxis);
+  static void Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis);
+  static void Finish(Shared& shared);
 
   std::string path_;
   std::shared_ptr<Shared> shared_;

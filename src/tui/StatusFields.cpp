@@ -21,7 +21,19 @@ std::string CompactCount(size_t count) {
 std::string ComposeViewerStatus(const StatusFields& fields, int widthCells) {
   constexpr int kLeadMinCells = 32;  // a long path keeps its tail: file name and [i/n]
   // Priorities: lower numbers are kept longest.
-  enum : int { kLead, kHelp, kGlyphs, kView, kMethod, kUp, kFaces, kTriangles, kMs, kVertices };
+  enum : int {
+    kLead,
+    kHelp,
+    kGlyphs,
+    kDetail,
+    kView,
+    kMethod,
+    kUp,
+    kFaces,
+    kTriangles,
+    kMs,
+    kVertices
+  };
   StatusSegment lead{fields.lead, kLead, false, Elision::kMiddle};
   if (fields.leadIsModel) {
     lead.elision = Elision::kFront;
@@ -46,6 +58,8 @@ std::string ComposeViewerStatus(const StatusFields& fields, int widthCells) {
   if (!fields.upAxis.empty()) {
     segments.insert(segments.begin() + 2, {"up " + fields.upAxis, kUp, false});
   }
+  if (!fields.detail.empty())
+    segments.insert(segments.begin() + 1, {fields.detail, kDetail, false});
   if (!fields.glyphs.empty()) segments.insert(segments.begin() + 1, {fields.glyphs, kGlyphs, false});
   return ComposeStatusLine(std::move(segments), widthCells);
 }

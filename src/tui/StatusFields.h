@@ -13,6 +13,7 @@ struct StatusFields {
   std::string method;       ///< "zbuffer contrast"
   std::string glyphs;       ///< the glyph mode, "sextants"; empty: not shown
   std::string upAxis;       ///< "+z"; empty: not shown
+  std::string detail;       ///< the level of detail drawn, "lod 2/4 30.8k"; empty: exact
   size_t vertices = 0;
   size_t faces = 0;
   int facesVisible = 0;
@@ -20,10 +21,10 @@ struct StatusFields {
   double frameMs = 0.0;
 };
 
-/// The status line in widthCells. Left: the lead, glyph mode, method, up
+/// The status line in widthCells. Left: the lead, glyph mode, level of detail, method, up
 /// axis, faces, triangles, vertices; right: the view, ms per frame and
 /// "? help". When space is short the least useful go first: vertices, ms,
-/// triangles, faces, up axis, method, view, glyph mode; the model's file
+/// triangles, faces, up axis, method, view, level of detail, glyph mode; the model's file
 /// name and "? help" stay.
 std::string ComposeViewerStatus(const StatusFields& fields, int widthCells);
 

@@ -12,7 +12,9 @@
 #include <iostream>
 
 #include "io/LoadError.h"
+#include "raster/DetailPick.h"
 #include "raster/Renderer.h"
+#include "tui/DetailJob.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
 #include "tui/PathCompletion.h"
@@ -37,9 +39,9 @@ constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is look
 
 /// How the event loop ended.
 struct LoopOutcome {
-  int signalNumber = 0;          ///< the signal that ended it, or 0 (q)
-  bool abandonedLoad = false;    ///< a worker was still loading: leave with _Exit
-  std::string cancelledStart;    ///< the first model's load cancelled by Esc: its name
+  int signalNumber = 0;        ///< the signal that ended it, or 0 (q)
+  bool abandonedLoad = false;  ///< a worker was still loading: leave with _Exit
+  std::string cancelledStart;  ///< the first model's load cancelled by Esc: its name
 };
 
 std::optional<NamedKey> NamedKeyFor(int key) {
@@ -83,6 +85,7 @@ class EventLoop {
     while (!state_.QuitRequested() && !state_.StartError()) {
       StartRequestedLoad();
       if (dirty_) Draw();
+      UpdateDetailJob();
       // Step 1: sleep until input, a signal, a finished load, or the next
       // turntable frame (or a look at the load's progress).
       int timeoutMs = -1;
@@ -93,10 +96,11 @@ class EventLoop {
       }
       if (job_)
         timeoutMs = timeoutMs < 0 ? kLoadProgressPollMs : std::min(timeoutMs, kLoadProgressPollMs);
-      pollfd fds[3] = {{STDIN_FILENO, POLLIN, 0},
+      pollfd fds[4] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
-                       {job_ ? job_->ReadyFd() : -1, POLLIN, 0}};
-      poll(fds, 3, timeoutMs);
+                       {job_ ? job_->ReadyFd() : -1, POLLIN, 0},
+                       {detailJob_ ? detailJob_->ReadyFd() : -1, POLLIN, 0}};
+      poll(fds, 4, timeoutMs);
       if (const int signalNumber = HandleSignals(); signalNumber != 0) {
         outcome.signalNumber = signalNumber;
         break;
@@ -107,6 +111,7 @@ class EventLoop {
       // Step 3: a finished load, or news of one still running.
       if (job_ && job_->Finished()) FinishLoad();
       if (job_ && LoadingText() != shownLoadingText_) dirty_ = true;
+      UpdateDetailJob();
       // Step 4: the turntable, at a capped rate.
       if (state_.Turntable() && Clock::now() >= nextTurntableFrame) {
         state_.TurntableStep();
@@ -115,9 +120,11 @@ class EventLoop {
       }
     }
     // A worker still reading a file is asked to stop and left to end alone.
-    outcome.abandonedLoad = abandonedLoad_ || (job_ && job_->Abandoned());
+    outcome.abandonedLoad =
+        abandonedLoad_ || (job_ && job_->Abandoned()) || (detailJob_ && !detailJob_->Finished());
     if (cancelledStart_) outcome.cancelledStart = cancelledName_;
     job_.reset();
+    detailJob_.reset();
     return outcome;
   }
 
@@ -128,7 +135,11 @@ class EventLoop {
     std::optional<LoadRequest> request = state_.TakeLoadRequest();
     if (!request) return;
     jobRequest_ = std::move(*request);
-    job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.UpAxisOverride());
+    if (jobRequest_.turnTo) {
+      job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.SharedScene(), *jobRequest_.turnTo);
+    } else {
+      job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.UpAxisOverride());
+    }
     shownLoadingText_.clear();
     dirty_ = true;
   }
@@ -138,6 +149,23 @@ class EventLoop {
     job_.reset();
     state_.FinishLoad(jobRequest_, std::move(scene));
     dirty_ = true;
+  }
+
+  // Levels of detail: built on a worker once the scene's first exact frame is
+  // up and no load runs; taken when done; dropped when the scene changed.
+  void UpdateDetailJob() {
+    if (detailJob_ && detailJob_->ForScene() != state_.SharedScene()) {
+      detailJob_.reset();
+      abandonedLoad_ = true;  // a cancelled build may still be running
+    }
+    if (detailJob_ && detailJob_->Finished()) {
+      state_.SetLevels(detailJob_->ForScene(), detailJob_->Take());
+      detailJob_.reset();
+      dirty_ = true;
+    }
+    if (!detailJob_ && !job_ && framesDrawn_ > 0 && state_.WantsLevels()) {
+      detailJob_ = std::make_unique<DetailJob>(state_.SharedScene());
+    }
   }
 
   void CancelLoad() {
@@ -157,7 +185,10 @@ class EventLoop {
   // "loading NAME 37%", as the status line shows it while a worker loads.
   std::string LoadingText() const {
     if (!job_) return "";
-    std::string text = job_->Preparing() ? "preparing " : "loading ";
+    std::string text = jobRequest_.turnTo ? "turning up axis to " +
+                                                std::string(UpAxisName(*jobRequest_.turnTo)) + ": "
+                       : job_->Preparing() ? "preparing "
+                                           : "loading ";
     text += LoadName();
     const double progress = job_->Progress();
     if (!job_->Preparing() && progress >= 0.0) {
@@ -221,7 +252,8 @@ class EventLoop {
       action = ActionForChar(key);
     }
     const bool loads = action == ViewerAction::kOpenFile || action == ViewerAction::kNextModel ||
-                       action == ViewerAction::kPreviousModel;
+                       action == ViewerAction::kPreviousModel ||
+                       action == ViewerAction::kCycleUpAxis;
     if (loads && job_) {  // one load at a time
       state_.SetMessage("still loading " + LoadName() + " (Esc cancels)");
       dirty_ = true;
@@ -330,10 +362,10 @@ class EventLoop {
     if (!state_.HasModel()) {  // the first model is loading: only the status line
       grid_.Clear();
       shownLoadingText_ = LoadingText();
-      painter_.PaintStatus(ComposeStatusLine({{shownLoadingText_, 0, false, Elision::kMiddle},
-                                              {"? help", 1, true}},
-                                             StatusCols(cols)),
-                           grid_);
+      painter_.PaintStatus(
+          ComposeStatusLine({{shownLoadingText_, 0, false, Elision::kMiddle}, {"? help", 1, true}},
+                            StatusCols(cols)),
+          grid_);
       writer_.Present(grid_, std::nullopt);
       return;
     }
@@ -348,10 +380,13 @@ class EventLoop {
     frameOptions_.twoColour = state_.Colour() != ColourMode::kNone &&
                               (mode == GlyphMode::kBlocks || mode == GlyphMode::kQuadrants ||
                                mode == GlyphMode::kSextants);
-    const RenderStats stats = renderer_.Render(
-        state_.CurrentScene(), state_.CameraFor(cols, frameRows), frameOptions_, depth_, cells_);
+    const Camera camera = state_.CameraFor(cols, frameRows);
+    const DetailPick pick =
+        PickDetail(state_.Levels(), state_.CurrentScene(), camera, frameOptions_);
+    const RenderStats stats = renderer_.Render(*pick.scene, camera, frameOptions_, depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    CellColourMap colours(state_.CurrentScene().mesh.faceColors, levelCount, state_.Colour());
+    ++framesDrawn_;
+    CellColourMap colours(pick.scene->mesh.faceColors, levelCount, state_.Colour());
     painter_.PaintFrame(cells_, colours, grid_);
     // Step 2: overlays and the status line, then one write of what changed.
     if (state_.HelpShown()) painter_.PaintHelp(grid_);
@@ -364,14 +399,15 @@ class EventLoop {
                                     : "open (" + std::to_string(completionMatches_) + " matches): ";
       cursor = painter_.PaintPrompt(label, editor_, grid_);
     } else {
-      painter_.PaintStatus(StatusText(stats, frameMs, StatusCols(cols)), grid_);
+      painter_.PaintStatus(StatusText(stats, pick, frameMs, StatusCols(cols)), grid_);
     }
     writer_.Present(grid_, cursor);
   }
 
   // The status line: what is loading, a message or the model, then the
   // view, the help hint and what the frame holds (StatusFields).
-  std::string StatusText(const RenderStats& stats, double frameMs, int cols) {
+  std::string StatusText(const RenderStats& stats, const DetailPick& pick, double frameMs,
+                         int cols) {
     const ViewParams& view = state_.View();
     const RenderOptions& render = state_.Render();
     const Scene& scene = state_.CurrentScene();
@@ -401,6 +437,11 @@ class EventLoop {
       fields.leadIsModel = !state_.LightMode();
     }
     fields.glyphs = std::string(GlyphModeName(render.glyphs));
+    if (pick.level > 0) {  // "lod 2/4 30.8k": the level drawn, of how many, its triangles
+      fields.detail = "lod " + std::to_string(pick.level) + "/" +
+                      std::to_string(state_.Levels()->levels.size()) + " " +
+                      CompactCount(pick.scene->triangles.size());
+    }
     return ComposeViewerStatus(fields, cols);
   }
 
@@ -414,7 +455,9 @@ class EventLoop {
   CellBuffer cells_;
   DepthBuffer depth_;
   LineEditor editor_;
-  std::unique_ptr<LoadJob> job_;  ///< the load running on a worker, if any
+  std::unique_ptr<LoadJob> job_;          ///< the load running on a worker, if any
+  std::unique_ptr<DetailJob> detailJob_;  ///< levels of detail being built, if any
+  long framesDrawn_ = 0;
   LoadRequest jobRequest_;
   std::string shownLoadingText_;  ///< what the status line last said of it
   int completionMatches_ = 1;     ///< names the last Tab matched (1: no hint)
@@ -460,11 +503,10 @@ int RunViewer(const ViewerOptions& options) {
     const bool utf8 = codeset == "UTF-8";
     const char* term = std::getenv("TERM");
     const char* termProgram = std::getenv("TERM_PROGRAM");
-    state.SetGlyphs(
-        options.glyphs.value_or(PickGlyphMode(utf8, effective.colour != ColourMode::kNone,
-                                              term != nullptr ? term : "",
-                                              termProgram != nullptr ? termProgram : "")),
-        utf8);
+    state.SetGlyphs(options.glyphs.value_or(PickGlyphMode(
+                        utf8, effective.colour != ColourMode::kNone, term != nullptr ? term : "",
+                        termProgram != nullptr ? termProgram : "")),
+                    utf8);
     // The first model loads on the worker too: the screen says so at once.
     state.RequestFirst();
     EventLoop loop(state, session);

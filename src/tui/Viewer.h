@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/LevelOfDetail.h"
 #include "geometry/UpAxis.h"
 #include "raster/RenderOptions.h"
 #include "shade/ColourMode.h"
@@ -19,6 +20,8 @@ struct ViewerOptions {
   RenderOptions render;
   std::optional<GlyphMode> glyphs;  ///< unset: PickGlyphMode for the terminal
   std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
+  /// auto: levels of detail built on a worker after a big model's first frame.
+  DetailMode detail = DetailMode::kAuto;
   double theta = 0.3;            ///< the view `r` returns to, radians (SPEC 2)
   double phi = 1.3;
 };

@@ -44,12 +44,13 @@ ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
       startTheta_(options.theta),
       startPhi_(options.phi) {
   render_.keepDepth = false;  // the screen shows glyphs only
+  detail_ = options.detail;
   if (paths_.empty()) paths_.emplace_back();
   cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
 }
 
 void ViewerState::RequestFirst() {
-  pending_ = LoadRequest{paths_.front(), 0};
+  pending_ = LoadRequest{paths_.front(), 0, std::nullopt};
 }
 
 std::optional<LoadError> ViewerState::LoadFirst() {
@@ -59,7 +60,7 @@ std::optional<LoadError> ViewerState::LoadFirst() {
 }
 
 void ViewerState::RequestOpen(const std::string& path) {
-  pending_ = LoadRequest{path, std::nullopt};
+  pending_ = LoadRequest{path, std::nullopt, std::nullopt};
 }
 
 std::optional<LoadRequest> ViewerState::TakeLoadRequest() {
@@ -69,13 +70,22 @@ std::optional<LoadRequest> ViewerState::TakeLoadRequest() {
 }
 
 void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
+  if (request.turnTo) {  // u: the model shown, turned; the view stays
+    if (!scene.Ok()) {
+      message_ = StatusLineError(scene.Error());
+      return;
+    }
+    ShowScene(std::move(scene.Value()));
+    message_ = "up axis " + std::string(UpAxisName(*request.turnTo));
+    return;
+  }
   if (request.index && *request.index >= paths_.size()) return;
   if (!scene.Ok() && !hasModel_ && request.index) {  // starting: on to the next model
     if (!firstError_) firstError_ = scene.Error();
     message_ = StatusLineError(scene.Error());
     const size_t next = *request.index + 1;
     if (next < paths_.size()) {
-      pending_ = LoadRequest{paths_[next], next};
+      pending_ = LoadRequest{paths_[next], next, std::nullopt};
     } else {
       startError_ = firstError_;
     }
@@ -94,7 +104,7 @@ void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
     current_ += 1;
   }
   stepFrom_ = current_;
-  scene_ = std::move(scene.Value());
+  ShowScene(std::move(scene.Value()));
   hasModel_ = true;
   ResetView();
   if (!request.index) message_ = "opened " + ModelLabel();
@@ -106,9 +116,28 @@ void ViewerState::OpenPath(const std::string& path) {
 }
 
 void ViewerState::RunPendingLoad() {
-  if (const std::optional<LoadRequest> request = TakeLoadRequest()) {
+  const std::optional<LoadRequest> request = TakeLoadRequest();
+  if (!request) return;
+  if (request->turnTo) {
+    FinishLoad(*request, PrepareScene(Mesh(scene_->mesh), *request->turnTo));
+  } else {
     FinishLoad(*request, LoadViewerScene(request->path, {}, upAxis_));
   }
+}
+
+void ViewerState::ShowScene(Scene scene) {
+  scene_ = std::make_shared<const Scene>(std::move(scene));
+  levels_.reset();
+}
+
+bool ViewerState::WantsLevels() const {
+  return hasModel_ && detail_ == DetailMode::kAuto && !levels_ &&
+         scene_->triangles.size() >= DetailBuildOptions{}.minSourceTriangles;
+}
+
+void ViewerState::SetLevels(const std::shared_ptr<const Scene>& scene,
+                            std::shared_ptr<const DetailLevels> levels) {
+  if (scene == scene_) levels_ = std::move(levels);
 }
 
 void ViewerState::StepTo(size_t index) {
@@ -117,11 +146,11 @@ void ViewerState::StepTo(size_t index) {
     message_.clear();
     return;
   }
-  pending_ = LoadRequest{paths_[index], index};
+  pending_ = LoadRequest{paths_[index], index, std::nullopt};
 }
 
 void ViewerState::ResetView() {
-  view_ = DefaultView(scene_.diagonalModelUnits);
+  view_ = DefaultView(scene_->diagonalModelUnits);
   view_.theta = startTheta_;
   view_.phi = startPhi_;
   fitRho_ = view_.rho;
@@ -141,16 +170,16 @@ void ViewerState::Orbit(double dTheta, double dPhi) {
 }
 
 void ViewerState::ChangeDistance(double factor) {
-  const ViewLimits limits = LimitsForDiagonal(scene_.diagonalModelUnits);
+  const ViewLimits limits = LimitsForDiagonal(scene_->diagonalModelUnits);
   view_.rho = std::clamp(view_.rho * factor, limits.rhoMin, limits.rhoMax);
 }
 
-// The next axis of the cycle, for this model only; the view stays (turning
-// by an axis permutation keeps the bounding box's diagonal, so the fit too).
+// The next axis of the cycle, for this model only, prepared on the event
+// loop's worker; the view stays (turning by an axis permutation keeps the
+// bounding box's diagonal, so the fit too).
 void ViewerState::CycleUpAxis() {
-  const UpAxis next = NextUpAxis(scene_.upAxis);
-  scene_ = PrepareScene(std::move(scene_.mesh), next);
-  message_ = "up axis " + std::string(UpAxisName(next));
+  if (!hasModel_) return;
+  pending_ = LoadRequest{paths_[current_], current_, NextUpAxis(scene_->upAxis)};
 }
 
 void ViewerState::Apply(ViewerAction action) {
@@ -245,7 +274,7 @@ void ViewerState::TurntableStep() {
 }
 
 Camera ViewerState::CameraFor(int widthCells, int heightCells) const {
-  return FitCameraAt(scene_, view_, fitRho_, widthCells, heightCells, cellAspect_);
+  return FitCameraAt(*scene_, view_, fitRho_, widthCells, heightCells, cellAspect_);
 }
 
 std::string ViewerState::ModelLabel() const {

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "geometry/Camera.h"
+#include "geometry/LevelOfDetail.h"
 #include "geometry/Scene.h"
 #include "io/LoadError.h"
 #include "io/ModelLoader.h"
@@ -25,6 +27,8 @@ struct LoadRequest {
   std::string path;
   /// Which model of the list (n, p); none: a new path to add after the current one (o).
   std::optional<size_t> index;
+  /// Set (u): the model shown, prepared again with this up axis; the view stays.
+  std::optional<UpAxis> turnTo;
 };
 
 /// Everything the viewer shows, changed only through actions: no terminal
@@ -65,7 +69,20 @@ class ViewerState {
   void TurntableStep();
 
   Camera CameraFor(int widthCells, int heightCells) const;
-  const Scene& CurrentScene() const { return scene_; }
+  const Scene& CurrentScene() const { return *scene_; }
+  /// The scene shown, shared with workers that read it (re-preparation, levels of detail).
+  const std::shared_ptr<const Scene>& SharedScene() const { return scene_; }
+  DetailMode Detail() const { return detail_; }
+  /// The current scene's levels of detail, once built (null before, or when off).
+  const DetailLevels* Levels() const {
+    return detail_ == DetailMode::kAuto ? levels_.get() : nullptr;
+  }
+  /// True when levels should be built for the scene shown: auto, a big
+  /// enough model, none built yet.
+  bool WantsLevels() const;
+  /// Levels built for `scene`: kept if it is still the one shown.
+  void SetLevels(const std::shared_ptr<const Scene>& scene,
+                 std::shared_ptr<const DetailLevels> levels);
   const RenderOptions& Render() const { return render_; }
   const ViewParams& View() const { return view_; }
   double CellAspect() const { return cellAspect_; }
@@ -97,7 +114,7 @@ class ViewerState {
   void Orbit(double dTheta, double dPhi);
   void ChangeDistance(double factor);
   void CycleUpAxis();
-
+  void ShowScene(Scene scene);
 
   std::vector<std::string> paths_;  ///< "" is the demo scene
   size_t current_ = 0;
@@ -106,7 +123,9 @@ class ViewerState {
   bool hasModel_ = false;
   std::optional<LoadError> firstError_;  ///< of the models tried before one loaded
   std::optional<LoadError> startError_;
-  Scene scene_;
+  std::shared_ptr<const Scene> scene_ = std::make_shared<const Scene>();
+  std::shared_ptr<const DetailLevels> levels_;  ///< of scene_
+  DetailMode detail_ = DetailMode::kAuto;
   ViewParams view_;
   double fitRho_ = 1.0;
   double cellAspect_ = 2.0;

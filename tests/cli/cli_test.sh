@@ -133,6 +133,22 @@ expect up_override_turns_the_model bash -c "! cmp -s '$work/out' '$work/zup'"
 check up_z_is_the_dat_default 0 "" -- "$bin" render "$src/data/steps.dat" --up z --size 40x12
 expect up_z_equals_default cmp -s "$work/out" "$work/zup"
 check bad_up 2 "--up" -- "$bin" render "$src/data/cube.dat" --up w
+
+# Level of detail: off (render's default) draws exactly what render draws
+# without the option; auto draws a big model's level, the frame still whole.
+"$bin" generate sphere --triangles 100000 -o "$work/lod_sphere.ply" >/dev/null
+for model in "$work/lod_sphere.ply" "$src/data/beams.dat"; do
+  name=$(basename "$model" | tr . _)
+  "$bin" render "$model" --size 60x20 --format json >"$work/lod_default"
+  check "lod_off_$name" 0 "" -- "$bin" render "$model" --size 60x20 --format json --lod off
+  expect "lod_off_is_exact_$name" cmp -s "$work/out" "$work/lod_default"
+done
+check lod_auto 0 "" -- "$bin" render "$work/lod_sphere.ply" --size 60x20 --lod auto --frames 2
+expect lod_auto_two_whole_frames test "$(awk 'length($0) == 60' "$work/out" | wc -l)" -eq 40
+"$bin" render "$src/data/beams.dat" --size 60x20 >"$work/lod_default"
+check lod_auto_small_model 0 "" -- "$bin" render "$src/data/beams.dat" --size 60x20 --lod auto
+expect lod_auto_small_model_is_exact cmp -s "$work/out" "$work/lod_default"
+check bad_lod 2 "--lod" -- "$bin" render "$src/data/cube.dat" --lod on
 check viewer_bad_up 2 "--up" -- "$bin" --up sideways
 
 # Without --size: the terminal's size (one row less) when stdout is a terminal.

@@ -220,6 +220,17 @@ tm send-keys -t v r
 at_prompt "$work/big.dat"
 wait_for 'loading .*big\.dat' 5 >/dev/null && pass || fail "no loading message the second time"
 wait_for 'opened .*big\.dat' 30 >/dev/null && pass || fail "the big model did not open"
+# u turns the big model on the worker: keys are answered meanwhile (the help
+# comes up beside "turning up axis"), then the turned model is shown.
+tm send-keys -t v u '?'
+if wait_for 'turning up axis to .*big\.dat' 5 >/dev/null && screen | grep -q 'termshade keys'; then
+  pass
+else
+  fail "u on a big model: no help while it was being turned"
+fi
+wait_for '^up axis [-+][xyz] ' 30 >/dev/null && pass || fail "u on a big model: never turned"
+tm send-keys -t v '?'  # closes the help
+wait_for '\? help' 5 >/dev/null
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null || fail "q after the big model"
 # The first model loads with the screen already taken: Esc cancels it (exit

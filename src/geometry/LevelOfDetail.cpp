@@ -1,0 +1,250 @@
+#include "geometry/LevelOfDetail.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <tuple>
+#include <utility>
+
+namespace termshade {
+namespace {
+
+constexpr uint32_t kNone = UINT32_MAX;
+// A fin: height over longest edge below kFinHeight, and a normal whose cosine
+// with every source face at its corners is below kFinAgreement.
+constexpr double kFinHeight = 0.05;
+constexpr double kFinAgreement = 0.5;
+
+// What every level is simplified from: float positions, indices that join
+// vertices at the same position (so seams and unwelded files collapse too),
+// and one face touching each such vertex.
+struct Source {
+  std::vector<float> positions;   ///< xyz per vertex of the exact scene
+  std::vector<uint32_t> indices;  ///< 3 per exact triangle, position-joined
+  std::vector<uint32_t> vertexFace;
+  double scaleModelUnits = 0.0;  ///< meshoptimizer's extent: relative error x scale = model units
+};
+
+Source MakeSource(const Scene& exact) {
+  Source source;
+  const size_t vertexCount = exact.verticesWorld.size();
+  source.positions.reserve(vertexCount * 3);
+  for (const Vec3& p : exact.verticesWorld) {
+    const Vec3 finite = IsFinite(p) ? p : Vec3{};
+    source.positions.insert(
+        source.positions.end(),
+        {static_cast<float>(finite.x), static_cast<float>(finite.y), static_cast<float>(finite.z)});
+  }
+  std::vector<uint32_t> plain;
+  plain.reserve(exact.triangles.size() * 3);
+  for (const SceneTriangle& t : exact.triangles) {
+    plain.insert(plain.end(), t.vertices.begin(), t.vertices.end());
+  }
+  source.indices.resize(plain.size());
+  meshopt_generateShadowIndexBuffer(source.indices.data(), plain.data(), plain.size(),
+                                    source.positions.data(), vertexCount, sizeof(float) * 3,
+                                    sizeof(float) * 3);
+  source.vertexFace.assign(vertexCount, kNone);
+  for (size_t t = 0; t < exact.triangles.size(); ++t) {
+    for (int corner = 0; corner < 3; ++corner) {
+      uint32_t& face = source.vertexFace[source.indices[3 * t + corner]];
+      if (face == kNone) face = exact.triangles[t].face;
+    }
+  }
+  source.scaleModelUnits =
+      meshopt_simplifyScale(source.positions.data(), vertexCount, sizeof(float) * 3);
+  return source;
+}
+
+// The exact face a simplified triangle stands for: of the faces at its
+// corners, the one whose normal is nearest its own; and that cosine.
+std::pair<uint32_t, double> SourceFace(const Scene& exact, const Source& source,
+                                       const uint32_t* corners, Vec3 normal) {
+  uint32_t best = source.vertexFace[corners[0]];
+  double bestDot = -std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 3; ++c) {
+    const uint32_t face = source.vertexFace[corners[c]];
+    const double dot = Dot(exact.facePlanesWorld[face].normal, normal);
+    if (dot > bestDot) {
+      bestDot = dot;
+      best = face;
+    }
+  }
+  return {best, bestDot};
+}
+
+// Unique undirected edges of the level's triangles, each with its first face (wire mode).
+void CollectLevelEdges(Scene& scene) {
+  std::vector<std::tuple<uint32_t, uint32_t, uint32_t>> edges;
+  edges.reserve(scene.triangles.size() * 3);
+  for (const SceneTriangle& t : scene.triangles) {
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t a = t.vertices[c], b = t.vertices[(c + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b), t.face);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i < edges.size(); ++i) {
+    const auto [low, high, face] = edges[i];
+    if (i > 0 && std::get<0>(edges[i - 1]) == low && std::get<1>(edges[i - 1]) == high) continue;
+    scene.edges.push_back({{low, high}, face});
+  }
+}
+
+// A scene of the simplified triangles (indices into the exact vertices): the
+// vertices they use, one face per triangle, the exact scene's frame and fit.
+DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const uint32_t> indices,
+                      double errorModelUnits, std::vector<uint32_t>& newIndex) {
+  DetailLevel level;
+  Scene& scene = level.scene;
+  scene.name = exact.name;
+  scene.worldFromFile = exact.worldFromFile;
+  scene.upAxis = exact.upAxis;
+  scene.upAxisOverridden = exact.upAxisOverridden;
+  scene.diagonalModelUnits = exact.diagonalModelUnits;
+  scene.radiusModelUnits = exact.radiusModelUnits;
+  scene.mesh.name = exact.mesh.name;
+  scene.mesh.upAxisFile = exact.mesh.upAxisFile;
+  level.errorModelUnits = errorModelUnits;
+
+  // Step 1: the vertices used, in first-use order.
+  std::vector<uint32_t> used;
+  for (const uint32_t v : indices) {
+    if (newIndex[v] != kNone) continue;
+    newIndex[v] = static_cast<uint32_t>(used.size());
+    used.push_back(v);
+    scene.verticesWorld.push_back(exact.verticesWorld[v]);
+    scene.mesh.verticesFile.push_back(exact.mesh.verticesFile[v]);
+  }
+
+  // Step 2: each triangle a face, with its plane and its source face.
+  const size_t triangleCount = indices.size() / 3;
+  scene.triangles.reserve(triangleCount);
+  scene.facePlanesWorld.reserve(triangleCount);
+  scene.faceTriangleStarts.reserve(triangleCount + 1);
+  scene.faceTriangleStarts.push_back(0);
+  scene.mesh.faceCorners.reserve(indices.size());
+  level.sourceFaces.reserve(triangleCount);
+  const bool coloured = !exact.mesh.faceColors.empty();
+  for (size_t t = 0; t < triangleCount; ++t) {
+    const uint32_t* corners = &indices[3 * t];
+    std::array<uint32_t, 3> local{newIndex[corners[0]], newIndex[corners[1]], newIndex[corners[2]]};
+    const Vec3 a = scene.verticesWorld[local[0]], b = scene.verticesWorld[local[1]],
+               c = scene.verticesWorld[local[2]];
+    // Collapses along a row of the source's vertices can leave a fin: a sliver
+    // with its corners on that row, across the surface. It shows no area,
+    // only a wrong normal: left out.
+    const Vec3 cross = Cross(b - a, c - a);
+    const double longest = std::max({Dot(b - a, b - a), Dot(c - b, c - b), Dot(a - c, a - c)});
+    Vec3 normal = Normalized(cross);
+    auto [sourceFace, agreement] = SourceFace(exact, source, corners, normal);
+    if (normal == Vec3{} ||
+        (Length(cross) < kFinHeight * longest && std::abs(agreement) < kFinAgreement)) {
+      continue;
+    }
+    // A collapse that folded a triangle over (rare) turns it inside out:
+    // wound back as its source face, it covers its part of the fold from outside.
+    if (agreement < 0.0) {
+      std::swap(local[1], local[2]);
+      normal = -normal;
+      std::tie(sourceFace, agreement) = SourceFace(exact, source, corners, normal);
+    }
+    const auto face = static_cast<uint32_t>(scene.triangles.size());
+    scene.facePlanesWorld.push_back({normal, Dot(normal, (a + b + c) * (1.0 / 3.0))});
+    scene.triangles.push_back({local, face});
+    scene.faceTriangleStarts.push_back(face + 1);
+    scene.mesh.faceCorners.insert(scene.mesh.faceCorners.end(), local.begin(), local.end());
+    scene.mesh.faceStarts.push_back(static_cast<uint32_t>(scene.mesh.faceCorners.size()));
+    level.sourceFaces.push_back(sourceFace);
+    if (coloured) scene.mesh.faceColors.push_back(exact.mesh.faceColors[sourceFace]);
+  }
+  scene.mesh.edgeHidden.assign(scene.mesh.faceCorners.size(), 0);
+  CollectLevelEdges(scene);
+  for (const uint32_t v : used) newIndex[v] = kNone;
+  return level;
+}
+
+}  // namespace
+
+std::string_view DetailModeName(DetailMode mode) {
+  return mode == DetailMode::kAuto ? "auto" : "off";
+}
+
+std::optional<DetailMode> ParseDetailMode(std::string_view name) {
+  if (name == "auto") return DetailMode::kAuto;
+  if (name == "off") return DetailMode::kOff;
+  return std::nullopt;
+}
+
+DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& options) {
+  DetailLevels result;
+  result.exactTriangles = exact.triangles.size();
+  if (exact.triangles.size() < options.minSourceTriangles) return result;
+  auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(); };
+  const Source source = MakeSource(exact);
+  const size_t vertexCount = exact.verticesWorld.size();
+  std::vector<uint32_t> newIndex(vertexCount, kNone);
+  std::vector<uint32_t> current = source.indices, simplified(current.size());
+  double relativeError = 0.0;  // accumulated over the levels: each is simplified from the last
+  while (!cancelled()) {
+    const size_t triangles = current.size() / 3;
+    const auto target = static_cast<size_t>(static_cast<double>(triangles) / options.reduction);
+    if (target < options.minTriangles) break;
+    // Step 1: edge collapse within what error is left.
+    float stepError = 0.0F;
+    const auto budget = static_cast<float>(options.maxRelativeError - relativeError);
+    // (meshopt_simplifySloppy is 3x faster here but twice the error, and stalls near 20k.)
+    size_t indexCount =
+        meshopt_simplify(simplified.data(), current.data(), current.size(), source.positions.data(),
+                         vertexCount, sizeof(float) * 3, target * 3, budget, 0, &stepError);
+    // Step 2: stop where the error budget (or the topology) stops the collapse.
+    if (indexCount == 0 || indexCount > current.size() * 3 / 4) break;
+    relativeError += stepError;
+    simplified.resize(indexCount);
+    result.levels.push_back(
+        MakeLevel(exact, source, simplified, relativeError * source.scaleModelUnits, newIndex));
+    current.swap(simplified);
+    simplified.resize(current.size());
+  }
+  if (cancelled()) result.levels.clear();
+  return result;
+}
+
+double TrianglesNeeded(const Scene& exact, const Camera& camera, const DetailTarget& target) {
+  const double radius = exact.radiusModelUnits, rho = camera.view.rho;
+  if (!(rho > 1.5 * radius) || !(radius > 0.0)) return std::numeric_limits<double>::infinity();
+  // The bounding sphere's silhouette radius, in cell widths across and rows down.
+  const double radiusCells = camera.projection.d * radius / std::sqrt(rho * rho - radius * radius);
+  const double discSamples = std::numbers::pi * radiusCells * target.samplesAcross *
+                             (radiusCells / camera.projection.cellAspect) * target.samplesDown;
+  return 2.0 * discSamples / target.samplesPerTriangle;
+}
+
+size_t ChooseDetailLevel(const DetailLevels& levels, const Scene& exact, const Camera& camera,
+                         const DetailTarget& target) {
+  const double needed = TrianglesNeeded(exact, camera, target);
+  const double rho = camera.view.rho, radius = exact.radiusModelUnits;
+  // Samples per model unit at the model's nearest point.
+  const double samplesPerUnit = camera.projection.d *
+                                std::max(target.samplesAcross, target.samplesDown) /
+                                std::max(rho - radius, 1e-300);
+  size_t chosen = 0;
+  for (size_t i = 0; i < levels.levels.size(); ++i) {
+    const DetailLevel& level = levels.levels[i];
+    if (static_cast<double>(level.scene.triangles.size()) < needed) break;
+    if (level.errorModelUnits * samplesPerUnit > target.maxErrorSamples) break;
+    chosen = i + 1;
+  }
+  return chosen;
+}
+
+const Scene& DetailScene(const DetailLevels& levels, const Scene& exact, size_t level) {
+  return level == 0 || level > levels.levels.size() ? exact : levels.levels[level - 1].scene;
+}
+
+}  // namespace termshade
