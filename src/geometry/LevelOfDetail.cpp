@@ -78,24 +78,6 @@ std::pair<uint32_t, double> SourceFace(const Scene& exact, const Source& source,
   return {best, bestDot};
 }
 
-// Unique undirected edges of the level's triangles, each with its first face (wire mode).
-void CollectLevelEdges(Scene& scene) {
-  std::vector<std::tuple<uint32_t, uint32_t, uint32_t>> edges;
-  edges.reserve(scene.triangles.size() * 3);
-  for (const SceneTriangle& t : scene.triangles) {
-    for (int c = 0; c < 3; ++c) {
-      const uint32_t a = t.vertices[c], b = t.vertices[(c + 1) % 3];
-      edges.emplace_back(std::min(a, b), std::max(a, b), t.face);
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  for (size_t i = 0; i < edges.size(); ++i) {
-    const auto [low, high, face] = edges[i];
-    if (i > 0 && std::get<0>(edges[i - 1]) == low && std::get<1>(edges[i - 1]) == high) continue;
-    scene.edges.push_back({{low, high}, face});
-  }
-}
-
 // A scene of the simplified triangles (indices into the exact vertices): the
 // vertices they use, one face per triangle, the exact scene's frame and fit.
 DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const uint32_t> indices,
@@ -164,7 +146,6 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     if (coloured) scene.mesh.faceColors.push_back(exact.mesh.faceColors[sourceFace]);
   }
   scene.mesh.edgeHidden.assign(scene.mesh.faceCorners.size(), 0);
-  CollectLevelEdges(scene);
   for (const uint32_t v : used) newIndex[v] = kNone;
   return level;
 }
