@@ -9,6 +9,7 @@
 #include <regex>
 
 #include "FidelityBench.h"
+#include "FrameBench.h"
 #include "LoadBench.h"
 #include "MethodsBench.h"
 #include "ModelsBench.h"
@@ -335,6 +336,18 @@ int Run(int argc, char** argv) {
       ->add_option("--dir", loadBench.directory,
                    "folder for the generated models (default: a temporary folder)")
       ->type_name("DIR");
+  termshade::FrameBenchOptions frameBench;
+  CLI::App* frameCommand = benchCommand->add_subcommand(
+      "frame", "frame time by triangles x cells: 1 thread against all, cluster culling on and off");
+  frameCommand->add_option("--models", frameBench.modelPaths, "model files to time")
+      ->type_name("FILE");
+  frameCommand->add_option("--triangles", frameBench.triangleCounts,
+                           "generated spheres, in triangles (default 200000 2000000)");
+  frameCommand->add_option("--sizes", frameBench.sizes, "COLSxROWS (default 80x24 160x48 400x120)");
+  frameCommand->add_option("--threads", frameBench.threads, "all threads (default every core)")
+      ->check(CLI::Range(0, 256));
+  frameCommand->add_option("--frames", frameBench.frames, "turntable frames (default 15)")
+      ->check(CLI::Range(1, 1000));
   termshade::FidelityBenchOptions fidelityBench;
   CLI::App* fidelityCommand = benchCommand->add_subcommand(
       "fidelity",
@@ -363,6 +376,7 @@ int Run(int argc, char** argv) {
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
+  if (frameCommand->parsed()) return termshade::RunFrameBench(frameBench);
   if (fidelityCommand->parsed()) return termshade::RunFidelityBench(fidelityBench);
   if (terminalCommand->parsed()) {
     if (!terminalBench.modelPath.empty()) {  // a model that cannot load gives no meaningful table

@@ -147,6 +147,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     AddFaceGeometry(scene, face, cornersScratch, trianglesScratch);
   }
   CollectEdges(scene, *adjacency);
+  scene.clusters = BuildClusters(scene);
   scene.convexClosedSolid = IsConvexClosedSolid(scene, *adjacency);
   return scene;
 }

@@ -1,0 +1,59 @@
+#include "raster/WorkerPool.h"
+
+#include <algorithm>
+
+namespace termshade {
+
+WorkerPool::WorkerPool(int workers) {
+  for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { Loop(w); });
+}
+
+WorkerPool::~WorkerPool() {
+  {
+    const std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  start_.notify_all();
+  for (std::thread& thread : threads_) thread.join();
+}
+
+void WorkerPool::Run(const std::function<void(int)>& job) {
+  {
+    const std::lock_guard lock(mutex_);
+    job_ = &job;
+    running_ = static_cast<int>(threads_.size());
+    ++generation_;
+  }
+  start_.notify_all();
+  job(0);
+  std::unique_lock lock(mutex_);
+  done_.wait(lock, [this] { return running_ == 0; });
+  job_ = nullptr;
+}
+
+void WorkerPool::Loop(int worker) {
+  unsigned long seen = 0;
+  for (;;) {
+    const std::function<void(int)>* job = nullptr;
+    {
+      std::unique_lock lock(mutex_);
+      start_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      if (stop_) return;
+      seen = generation_;
+      job = job_;
+    }
+    (*job)(worker);
+    {
+      const std::lock_guard lock(mutex_);
+      --running_;
+    }
+    done_.notify_one();
+  }
+}
+
+int ResolvedThreadCount(int requested) {
+  if (requested > 0) return requested;
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+}  // namespace termshade
