@@ -155,7 +155,7 @@ bool ClusterStage::Usable(const Scene& scene) {
 
 int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int threads,
                        DepthBuffer& depth, CellBuffer& cells) {
-  if (threads > 1 && !frame.scanline && scene.triangles.size() >= kMinTrianglesForThreads) {
+  if (threads > 1 && !frame.scanline && scene.triangles.size() >= frame.threadsFromTriangles) {
     return DrawThreaded(scene, frame, threads, depth, cells);
   }
   const int width = cells.WidthCells(), height = cells.HeightCells();
@@ -196,15 +196,16 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
   drawnPerRun_.assign(runs, 0);
 
   // Step 1: the vertices, a range per thread.
-  pool_->Run([&](int worker) {
+  auto project = [&](int worker) {
     const size_t count = raster_.size();
     ProjectRange(scene, frame, count * worker / threads, count * (worker + 1) / threads,
                  raster_.data(), codes_.data());
-  });
+  };
+  pool_->Run(project);
 
   // Step 2: runs of clusters set up in parallel, triangles binned by row band.
   nextTask_ = 0;
-  pool_->Run([&](int) {
+  auto setUp = [&](int) {
     for (int run = nextTask_++; run < runs; run = nextTask_++) {
       const size_t first = clusters.size() * run / runs, end = clusters.size() * (run + 1) / runs;
       std::vector<Binned>* const runBins = bins_.data() + static_cast<size_t>(run) * bands;
@@ -228,11 +229,12 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
       }
       drawnPerRun_[run] = drawn;
     }
-  });
+  };
+  pool_->Run(setUp);
 
   // Step 3: each band drawn by one thread, the runs in scene order.
   nextTask_ = 0;
-  pool_->Run([&](int) {
+  auto drawBands = [&](int) {
     for (int band = nextTask_++; band < bands; band = nextTask_++) {
       const RowRange rows{band * rowsPerBand, std::min(height, (band + 1) * rowsPerBand)};
       for (int run = 0; run < runs; ++run) {
@@ -242,7 +244,8 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
         }
       }
     }
-  });
+  };
+  pool_->Run(drawBands);
   int drawn = 0;
   for (int d : drawnPerRun_) drawn += d;
   return drawn;

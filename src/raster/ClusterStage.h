@@ -28,6 +28,7 @@ struct ClusterFrame {
   bool clusterCulling = true;  ///< per cluster: skip runs that face away or cover no sample
   bool floatGeometry = false;
   bool scanline = false;  ///< the scanline variant: one thread only
+  size_t threadsFromTriangles = 0;  ///< fewer triangles: one thread draws
 };
 
 /// The surface pass of zbuffer and cull: every vertex transformed, then the
@@ -39,9 +40,6 @@ struct ClusterFrame {
 /// frame is bit for bit the same.
 class ClusterStage {
  public:
-  /// Scenes below this many triangles draw on one thread (waking threads costs more).
-  static constexpr size_t kMinTrianglesForThreads = 20000;
-
   /// True when the scene carries clusters for all its triangles.
   static bool Usable(const Scene& scene);
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,6 +62,8 @@ struct RenderOptions {
   /// Threads drawing the frame: 0 every core; big scenes only (ClusterStage).
   /// The frame is the same whatever the count.
   int threads = 0;
+  /// Scenes with fewer triangles draw on one thread: waking threads costs more.
+  size_t threadsFromTriangles = 20000;
 };
 
 }  // namespace termshade

@@ -236,6 +236,7 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   frame.clusterCulling = options.variant.clusterCulling;
   frame.floatGeometry = options.variant.floatGeometry;
   frame.scanline = options.variant.scanline;
+  frame.threadsFromTriangles = options.threadsFromTriangles;
   // The scanline variant steps rows in float from its first row: one band only.
   const int threads = options.variant.scanline ? 1 : ResolvedThreadCount(options.threads);
   return clusterStage_.Draw(scene, frame, threads, depth, cells);

@@ -17,32 +17,36 @@ WorkerPool::~WorkerPool() {
   for (std::thread& thread : threads_) thread.join();
 }
 
-void WorkerPool::Run(const std::function<void(int)>& job) {
+void WorkerPool::RunErased(ErasedJob job, void* context) {
   {
     const std::lock_guard lock(mutex_);
-    job_ = &job;
+    job_ = job;
+    context_ = context;
     running_ = static_cast<int>(threads_.size());
     ++generation_;
   }
   start_.notify_all();
-  job(0);
+  job(context, 0);
   std::unique_lock lock(mutex_);
   done_.wait(lock, [this] { return running_ == 0; });
   job_ = nullptr;
+  context_ = nullptr;
 }
 
 void WorkerPool::Loop(int worker) {
   unsigned long seen = 0;
   for (;;) {
-    const std::function<void(int)>* job = nullptr;
+    ErasedJob job = nullptr;
+    void* context = nullptr;
     {
       std::unique_lock lock(mutex_);
       start_.wait(lock, [&] { return stop_ || generation_ != seen; });
       if (stop_) return;
       seen = generation_;
       job = job_;
+      context = context_;
     }
-    (*job)(worker);
+    job(context, worker);
     {
       const std::lock_guard lock(mutex_);
       --running_;

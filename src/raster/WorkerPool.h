@@ -1,7 +1,6 @@
 #pragma once
 
 #include <condition_variable>
-#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -19,17 +18,24 @@ class WorkerPool {
   WorkerPool& operator=(const WorkerPool&) = delete;
 
   int Workers() const { return static_cast<int>(threads_.size()) + 1; }
-  /// Calls job(worker) once for each worker 0 .. Workers() - 1, concurrently.
-  void Run(const std::function<void(int)>& job);
+  /// Calls job(worker) once for each worker 0 .. Workers() - 1, concurrently
+  /// (no allocation: the job is passed by reference).
+  template <typename Job>
+  void Run(Job& job) {
+    RunErased([](void* context, int worker) { (*static_cast<Job*>(context))(worker); }, &job);
+  }
 
  private:
+  using ErasedJob = void (*)(void* context, int worker);
+  void RunErased(ErasedJob job, void* context);
   void Loop(int worker);
 
   std::vector<std::thread> threads_;
   std::mutex mutex_;
   std::condition_variable start_;
   std::condition_variable done_;
-  const std::function<void(int)>* job_ = nullptr;
+  ErasedJob job_ = nullptr;
+  void* context_ = nullptr;
   unsigned long generation_ = 0;
   int running_ = 0;
   bool stop_ = false;
