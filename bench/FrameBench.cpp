@@ -50,7 +50,8 @@ std::vector<double> MedianMs(const Scene& scene, int width, int height,
       options.variant.clusterCulling = cases[k].culling;
       const Clock::time_point start = Clock::now();
       renderers[k].Render(scene, camera, options, depth, cells);
-      const double elapsed = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      const double elapsed =
+          std::chrono::duration<double, std::milli>(Clock::now() - start).count();
       if (frame > 0) ms[k].push_back(elapsed);  // the first frame warms caches and threads
     }
   }
@@ -64,9 +65,12 @@ std::vector<double> MedianMs(const Scene& scene, int width, int height,
 int RunFrameBench(const FrameBenchOptions& options) {
   const int all = ResolvedThreadCount(options.threads);
   std::vector<BenchScene> scenes;
-  std::vector<std::string> paths = options.modelPaths;
-  if (paths.empty() && options.triangleCounts.empty()) paths.push_back("data/sphere_cone.dat");
-  for (const std::string& path : paths) {
+  std::vector<size_t> triangleCounts = options.triangleCounts;
+  if (options.modelPaths.empty() && triangleCounts.empty()) {
+    scenes.push_back({"demo sphere_cone", PrepareScene(*GenerateScene("sphere_cone"))});
+    triangleCounts = {200000, 2000000};
+  }
+  for (const std::string& path : options.modelPaths) {
     Loaded<Mesh> mesh = LoadModelFile(path);
     if (!mesh.Ok()) {
       std::cerr << mesh.Error().ToString() << "\n";
@@ -74,7 +78,7 @@ int RunFrameBench(const FrameBenchOptions& options) {
     }
     scenes.push_back({path, PrepareScene(std::move(mesh.Value()))});
   }
-  for (const size_t triangles : options.triangleCounts) {
+  for (const size_t triangles : triangleCounts) {
     scenes.push_back({"sphere " + std::to_string(triangles / 1000) + "k",
                       PrepareScene(GenerateTriangleSphere(triangles))});
   }

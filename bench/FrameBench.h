@@ -9,8 +9,10 @@ namespace termshade {
 /// against every thread, cluster culling on and off, and the face-by-face
 /// loop; the configurations take turns frame by frame (one interleaved run).
 struct FrameBenchOptions {
-  std::vector<std::string> modelPaths;  ///< model files; none: data/sphere_cone.dat
-  std::vector<size_t> triangleCounts{200000, 2000000};  ///< generated spheres
+  /// Model files and generated spheres (triangles); neither given: the
+  /// demo scene and spheres of 0.2 and 2 million triangles.
+  std::vector<std::string> modelPaths;
+  std::vector<size_t> triangleCounts;
   std::vector<std::string> sizes{"80x24", "160x48", "400x120"};
   int threads = 0;  ///< "all threads": 0 every core
   int frames = 15;  ///< turntable frames timed per model and size

@@ -27,8 +27,8 @@ struct View {
   double theta, phi, rhoScale;  // rhoScale < 1: the eye close to or inside the model
 };
 
-const std::vector<View> kViews{{0.3, 1.3, 1.0}, {2.1, 0.4, 1.0}, {4.0, 2.6, 1.0},
-                               {1.0, 1.5, 0.35}, {5.5, 1.0, 0.12}};
+const std::vector<View> kViews{
+    {0.3, 1.3, 1.0}, {2.1, 0.4, 1.0}, {4.0, 2.6, 1.0}, {1.0, 1.5, 0.35}, {5.5, 1.0, 0.12}};
 
 Drawn Draw(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
            const RenderOptions& options) {
@@ -84,11 +84,11 @@ std::vector<NamedScene> SmallScenes() {
                                           {{{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1}}},
                                           {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
                                       }))});
-  scenes.push_back({"plates gap 1e-4", PrepareScene(QuadMesh({
-                                           {{{0, -2, -2}, {0, 2, -2}, {0, 2, 2}, {0, -2, 2}}},
-                                           {{{1e-4, -1, -1}, {1e-4, 1, -1}, {1e-4, 1, 1},
-                                             {1e-4, -1, 1}}},
-                                       }))});
+  scenes.push_back(
+      {"plates gap 1e-4", PrepareScene(QuadMesh({
+                              {{{0, -2, -2}, {0, 2, -2}, {0, 2, 2}, {0, -2, 2}}},
+                              {{{1e-4, -1, -1}, {1e-4, 1, -1}, {1e-4, 1, 1}, {1e-4, -1, 1}}},
+                          }))});
   Mesh nan = QuadMesh({quad});
   nan.verticesFile.push_back({NAN, 0, 0});
   nan.AddFace(std::array<uint32_t, 3>{0, 1, 4});
@@ -119,11 +119,10 @@ void ExpectEveryThreadCountMatches(const NamedScene& named, const std::vector<in
         for (const int threads : {1, 2, 3, 7}) {
           for (const bool culling : {true, false}) {
             Renderer renderer;
-            const std::string what = named.name + " " + std::to_string(width) + "x" +
-                                     std::to_string(height) + " " +
-                                     std::string(MethodName(method)) + " theta " +
-                                     std::to_string(view.theta) + " threads " +
-                                     std::to_string(threads) + (culling ? " culled" : " all");
+            const std::string what =
+                named.name + " " + std::to_string(width) + "x" + std::to_string(height) + " " +
+                std::string(MethodName(method)) + " theta " + std::to_string(view.theta) +
+                " threads " + std::to_string(threads) + (culling ? " culled" : " all");
             // Twice with the same renderer: the second frame reuses its bins and threads.
             for (int repeat = 0; repeat < 2; ++repeat) {
               ExpectSame(expected,
@@ -163,11 +162,14 @@ TEST(ThreadedFrame, DefaultThresholdStillMatches) {
 
 TEST(ThreadedFrame, SupersampledAndVariantsMatch) {
   const Scene scene = PrepareScene(*GenerateScene("sphere_cone"));
-  for (const auto change : {+[](RenderOptions& o) { o.variant.samples = {2, 2}; },
-                            +[](RenderOptions& o) { o.variant.depthFormat = DepthFormat::kLinearZ; },
-                            +[](RenderOptions& o) { o.variant.scanline = true; },
-                            +[](RenderOptions& o) { o.variant.floatGeometry = true; },
-                            +[](RenderOptions& o) { o.keepDepth = false; }}) {
+  for (const auto change :
+       {+[](RenderOptions& o) {
+          o.variant.samples = {2, 2};
+        },
+        +[](RenderOptions& o) { o.variant.depthFormat = DepthFormat::kLinearZ; },
+        +[](RenderOptions& o) { o.variant.scanline = true; },
+        +[](RenderOptions& o) { o.variant.floatGeometry = true; },
+        +[](RenderOptions& o) { o.keepDepth = false; }}) {
     RenderOptions plain = Options(Method::kZBuffer, 1, false, false);
     RenderOptions threaded = Options(Method::kZBuffer, 3, true, true);
     change(plain);

@@ -152,6 +152,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
   command
+      .add_option("--threads", options.threads,
+                  "threads drawing each frame of a big model (default 0: every core); the frame "
+                  "is the same with any count")
+      ->check(CLI::Range(0, 256));
+  command
       .add_option("--color", options.colour,
                   "cell colours: none, 256 (nearest xterm cube or grey entry), truecolor, or auto "
                   "(from NO_COLOR, COLORTERM and terminfo; the viewer's default; render's is 256)")
@@ -175,6 +180,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   }
   viewer.render.ramp = termshade::ShadeRamp(look.ramp);
   viewer.render.cullBackFaces = !look.noCull;
+  viewer.render.threads = look.threads;
   if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   viewer.upAxis = look.upAxis;
   viewer.theta = look.theta;
@@ -339,10 +345,12 @@ int Run(int argc, char** argv) {
   termshade::FrameBenchOptions frameBench;
   CLI::App* frameCommand = benchCommand->add_subcommand(
       "frame", "frame time by triangles x cells: 1 thread against all, cluster culling on and off");
-  frameCommand->add_option("--models", frameBench.modelPaths, "model files to time")
+  frameCommand
+      ->add_option("--models", frameBench.modelPaths,
+                   "model files to time (default: the demo scene)")
       ->type_name("FILE");
   frameCommand->add_option("--triangles", frameBench.triangleCounts,
-                           "generated spheres, in triangles (default 200000 2000000)");
+                           "generated spheres, in triangles (with no --models: 200000 2000000)");
   frameCommand->add_option("--sizes", frameBench.sizes, "COLSxROWS (default 80x24 160x48 400x120)");
   frameCommand->add_option("--threads", frameBench.threads, "all threads (default every core)")
       ->check(CLI::Range(0, 256));

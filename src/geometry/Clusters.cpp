@@ -81,7 +81,8 @@ SceneClusters BuildClusters(const Scene& scene) {
   for (size_t t = 0; t < triangleCount; t += SceneClusters::kMaxTriangles) {
     SceneCluster c;
     c.firstTriangle = static_cast<uint32_t>(t);
-    c.triangleEnd = static_cast<uint32_t>(std::min(triangleCount, t + SceneClusters::kMaxTriangles));
+    c.triangleEnd =
+        static_cast<uint32_t>(std::min(triangleCount, t + SceneClusters::kMaxTriangles));
     FitSphere(scene, c);
     FitCone(scene, c);
     out.clusters.push_back(c);

@@ -24,8 +24,7 @@ bool HoldsSample(double low, double high, int limit) {
 // triangle then has a shared out-code bit), or lies where every vertex is
 // projected directly and its projected box holds no cell-center sample.
 // Margins cover rounding: 1e-9 relative, 0.01 cell on the screen.
-bool SphereMayCover(const SceneCluster& cluster, const ClusterFrame& frame, int width,
-                    int height) {
+bool SphereMayCover(const SceneCluster& cluster, const ClusterFrame& frame, int width, int height) {
   const Vec3 c = TransformPoint(frame.eyeFromWorld, cluster.centerWorld);
   const double r = cluster.radius;
   const double margin = 1e-9 * (Length(c) + r);
@@ -215,8 +214,8 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
         const int32_t maxY = std::max(a.y, std::max(b.y, c.y));
         const int firstRow = std::max(0, (minY + kFixedHalf - 1) >> kSubCellBits);
         const int lastRow = std::min(height - 1, (maxY - kFixedHalf) >> kSubCellBits);
-        for (int band = firstRow / rowsPerBand; band <= lastRow / rowsPerBand && firstRow <= lastRow;
-             ++band) {
+        for (int band = firstRow / rowsPerBand;
+             band <= lastRow / rowsPerBand && firstRow <= lastRow; ++band) {
           runBins[band].push_back({a, b, c, faceNumber});
         }
       };

@@ -27,7 +27,7 @@ struct ClusterFrame {
   bool cullBackFaces = true;   ///< per face: skip faces whose plane faces away
   bool clusterCulling = true;  ///< per cluster: skip runs that face away or cover no sample
   bool floatGeometry = false;
-  bool scanline = false;  ///< the scanline variant: one thread only
+  bool scanline = false;            ///< the scanline variant: one thread only
   size_t threadsFromTriangles = 0;  ///< fewer triangles: one thread draws
 };
 

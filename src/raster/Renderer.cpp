@@ -29,8 +29,7 @@ bool NeedsDepth(const RenderOptions& options) {
 // (its scale comes from every vertex of the scene).
 bool DrawsByCluster(const Scene& scene, const RenderOptions& options) {
   return (options.method == Method::kZBuffer || options.method == Method::kCull) &&
-         options.variant.clusters &&
-         options.variant.depthFormat != DepthFormat::kFixed16InverseZ &&
+         options.variant.clusters && options.variant.depthFormat != DepthFormat::kFixed16InverseZ &&
          ClusterStage::Usable(scene);
 }
 
