@@ -13,6 +13,7 @@
 #include "geometry/ViewingTransform.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
+#include "support/TestSupport.h"
 
 namespace termshade {
 namespace {
@@ -58,16 +59,6 @@ void ExpectSame(const Drawn& expected, const Drawn& actual, const std::string& w
   EXPECT_EQ(expected.stats.facesVisible, actual.stats.facesVisible) << what;
 }
 
-Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads) {
-  Mesh mesh;
-  for (const auto& quad : quads) {
-    const auto base = static_cast<uint32_t>(mesh.verticesFile.size());
-    for (const Vec3& p : quad) mesh.verticesFile.push_back(p);
-    mesh.AddFace(std::array<uint32_t, 4>{base, base + 1, base + 2, base + 3});
-  }
-  return mesh;
-}
-
 struct NamedScene {
   std::string name;
   Scene scene;
@@ -79,17 +70,17 @@ std::vector<NamedScene> SmallScenes() {
     scenes.push_back({name, PrepareScene(*GenerateScene(name))});
   }
   const std::array<Vec3, 4> quad{{{0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1}}};
-  scenes.push_back({"coplanar duplicates", PrepareScene(QuadMesh({quad, quad, quad}))});
-  scenes.push_back({"crossing quads", PrepareScene(QuadMesh({
+  scenes.push_back({"coplanar duplicates", PrepareScene(test::QuadMesh({quad, quad, quad}))});
+  scenes.push_back({"crossing quads", PrepareScene(test::QuadMesh({
                                           {{{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1}}},
                                           {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
                                       }))});
   scenes.push_back(
-      {"plates gap 1e-4", PrepareScene(QuadMesh({
+      {"plates gap 1e-4", PrepareScene(test::QuadMesh({
                               {{{0, -2, -2}, {0, 2, -2}, {0, 2, 2}, {0, -2, 2}}},
                               {{{1e-4, -1, -1}, {1e-4, 1, -1}, {1e-4, 1, 1}, {1e-4, -1, 1}}},
                           }))});
-  Mesh nan = QuadMesh({quad});
+  Mesh nan = test::QuadMesh({quad});
   nan.verticesFile.push_back({NAN, 0, 0});
   nan.AddFace(std::array<uint32_t, 3>{0, 1, 4});
   nan.AddFace(std::array<uint32_t, 3>{0, 0, 1});  // collinear

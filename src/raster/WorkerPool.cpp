@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 namespace termshade {
 
 WorkerPool::WorkerPool(int workers) {
@@ -57,7 +61,16 @@ void WorkerPool::Loop(int worker) {
 
 int ResolvedThreadCount(int requested) {
   if (requested > 0) return requested;
+#if defined(__linux__)
+  // The cores this process may run on, by a system call: hardware_concurrency
+  // reads /sys, a file outside the model's folder (tests/models/corpus_check.sh).
+  cpu_set_t cores;
+  CPU_ZERO(&cores);
+  if (sched_getaffinity(0, sizeof(cores), &cores) == 0) return std::max(1, CPU_COUNT(&cores));
+  return 1;
+#else
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+#endif
 }
 
 }  // namespace termshade
