@@ -2,14 +2,23 @@
 
 #include <algorithm>
 
+#include <csignal>
+
 #if defined(__linux__)
+#include <pthread.h>
 #include <sched.h>
 #endif
 
 namespace termshade {
 
 WorkerPool::WorkerPool(int workers) {
+  // The workers take no signals (they inherit this mask): the viewer's
+  // SIGWINCH and SIGINT stay with the thread that waits for input.
+  sigset_t all, previous;
+  sigfillset(&all);
+  pthread_sigmask(SIG_SETMASK, &all, &previous);
   for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { Loop(w); });
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
 }
 
 WorkerPool::~WorkerPool() {
