@@ -53,6 +53,7 @@ std::vector<MethodCase> Methods() {
     options.method = method;
     options.shade = ShadeMode::kLambert;  // stable across frames: shade error means something
     options.keepDepth = false;            // as the viewer draws
+    options.threads = 1;                  // methods against methods; bench frame times threads
     change(options.variant);
     return options;
   };

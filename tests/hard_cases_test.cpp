@@ -40,16 +40,6 @@ Camera CameraLooking(const ViewParams& view, double radius, double fitRho, int w
   return {view, FitProjection(radius, fitRho, widthCells, heightCells, cellAspect)};
 }
 
-Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads) {
-  Mesh mesh;
-  for (const auto& quad : quads) {
-    const auto base = static_cast<uint32_t>(mesh.verticesFile.size());
-    for (const Vec3& p : quad) mesh.verticesFile.push_back(p);
-    mesh.AddFace(std::array<uint32_t, 4>{base, base + 1, base + 2, base + 3});
-  }
-  return mesh;
-}
-
 void ExpectNoFaceError(const Scene& scene, const Camera& camera, const std::string& what,
                        bool cull = true, int minCompared = 100) {
   RenderOptions options;
@@ -68,7 +58,7 @@ constexpr double kViews[][2] = {{0.3, 1.3}, {2.0, 0.7}, {-1.1, 2.1}, {4.0, 1.0}}
 
 TEST(HardCases, CyclicOverlapAndInterpenetration) {
   // Two quads crossing each other along a line, plus the three beams.
-  const Scene crossing = PrepareScene(QuadMesh({
+  const Scene crossing = PrepareScene(test::QuadMesh({
       {{{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1}}},
       {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
   }));
@@ -95,8 +85,8 @@ TEST(HardCases, CyclicOverlapAndInterpenetration) {
 
 TEST(HardCases, PolygonStraddlingTheEyePlane) {
   // A floor far larger than the view, reaching behind the eye, and a cube on it.
-  Mesh mesh =
-      QuadMesh({{{{-100, -100, -0.5}, {100, -100, -0.5}, {100, 100, -0.5}, {-100, 100, -0.5}}}});
+  Mesh mesh = test::QuadMesh(
+      {{{{-100, -100, -0.5}, {100, -100, -0.5}, {100, 100, -0.5}, {-100, 100, -0.5}}}});
   Mesh cube = *GenerateScene("cube");
   for (const Vec3& p : cube.verticesFile) mesh.verticesFile.push_back(p - Vec3{0.5, 0.5, 0.5});
   for (size_t f = 0; f < cube.FaceCount(); ++f) {
@@ -163,7 +153,7 @@ TEST(HardCases, CollinearDuplicateAndNaNTrianglesDrawNothing) {
 
 TEST(HardCases, CoplanarDuplicatesAreDeterministic) {
   const std::array<Vec3, 4> quad{{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}};
-  const Scene scene = PrepareScene(QuadMesh({quad, quad, quad}));
+  const Scene scene = PrepareScene(test::QuadMesh({quad, quad, quad}));
   RenderOptions options;
   const Camera camera = CameraLooking({5, 0.4, 0.6}, 1.5, 5);
   const Frame first = RenderWith(scene, camera, options);
@@ -182,7 +172,7 @@ TEST(HardCases, ParallelPlatesAtDecreasingGaps) {
   // Two plates facing the eye, the nearer one smaller; seen head-on from rho = 5.
   std::cout << "gap (model units, plates at ~5): wrong cells without the depth band\n";
   for (double gap = 1e-1; gap >= 1e-9; gap /= 10) {
-    const Scene scene = PrepareScene(QuadMesh({
+    const Scene scene = PrepareScene(test::QuadMesh({
         {{{0, -2, -2}, {0, 2, -2}, {0, 2, 2}, {0, -2, 2}}},
         {{{gap, -1, -1}, {gap, 1, -1}, {gap, 1, 1}, {gap, -1, 1}}},
     }));

@@ -163,6 +163,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.glyphs = *glyphs;
   renderOptions.twoColour = *format == FrameFormat::kAnsi;  // text and json have no colours
   renderOptions.cullBackFaces = !options.noCull;
+  renderOptions.threads = options.threads;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
   const auto [widthCells, heightCells] = FrameSizeCells(options);
   sink.depth.Resize(widthCells, heightCells);

@@ -29,6 +29,7 @@ struct RenderCommandOptions {
   int frames = 1;
   double stepRadians = 0.1;
   bool noCull = false;
+  int threads = 0;  ///< --threads: frame threads, 0 every core
   std::string inputFormat;       ///< --input-format: extension for content that cannot be sniffed
   size_t memoryBudgetBytes = 0;  ///< --memory-budget; 0: DefaultMemoryBudgetBytes()
   std::string reader = "auto";   ///< --reader auto|assimp

@@ -9,6 +9,7 @@
 #include <regex>
 
 #include "FidelityBench.h"
+#include "FrameBench.h"
 #include "LoadBench.h"
 #include "MethodsBench.h"
 #include "ModelsBench.h"
@@ -151,6 +152,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
   command
+      .add_option("--threads", options.threads,
+                  "threads drawing each frame of a big model (default 0: every core); the frame "
+                  "is the same with any count")
+      ->check(CLI::Range(0, 256));
+  command
       .add_option("--color", options.colour,
                   "cell colours: none, 256 (nearest xterm cube or grey entry), truecolor, or auto "
                   "(from NO_COLOR, COLORTERM and terminfo; the viewer's default; render's is 256)")
@@ -179,6 +185,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   }
   viewer.render.ramp = termshade::ShadeRamp(look.ramp);
   viewer.render.cullBackFaces = !look.noCull;
+  viewer.render.threads = look.threads;
   if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   viewer.upAxis = look.upAxis;
   viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
@@ -348,6 +355,20 @@ int Run(int argc, char** argv) {
       ->add_option("--dir", loadBench.directory,
                    "folder for the generated models (default: a temporary folder)")
       ->type_name("DIR");
+  termshade::FrameBenchOptions frameBench;
+  CLI::App* frameCommand = benchCommand->add_subcommand(
+      "frame", "frame time by triangles x cells: 1 thread against all, cluster culling on and off");
+  frameCommand
+      ->add_option("--models", frameBench.modelPaths,
+                   "model files to time (default: the demo scene)")
+      ->type_name("FILE");
+  frameCommand->add_option("--triangles", frameBench.triangleCounts,
+                           "generated spheres, in triangles (with no --models: 200000 2000000)");
+  frameCommand->add_option("--sizes", frameBench.sizes, "COLSxROWS (default 80x24 160x48 400x120)");
+  frameCommand->add_option("--threads", frameBench.threads, "all threads (default every core)")
+      ->check(CLI::Range(0, 256));
+  frameCommand->add_option("--frames", frameBench.frames, "turntable frames (default 15)")
+      ->check(CLI::Range(1, 1000));
   termshade::FidelityBenchOptions fidelityBench;
   CLI::App* fidelityCommand = benchCommand->add_subcommand(
       "fidelity",
@@ -376,6 +397,7 @@ int Run(int argc, char** argv) {
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
+  if (frameCommand->parsed()) return termshade::RunFrameBench(frameBench);
   if (fidelityCommand->parsed()) return termshade::RunFidelityBench(fidelityBench);
   if (terminalCommand->parsed()) {
     if (!terminalBench.modelPath.empty()) {  // a model that cannot load gives no meaningful table

@@ -146,6 +146,7 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     if (coloured) scene.mesh.faceColors.push_back(exact.mesh.faceColors[sourceFace]);
   }
   scene.mesh.edgeHidden.assign(scene.mesh.faceCorners.size(), 0);
+  scene.clusters = BuildClusters(scene);
   for (const uint32_t v : used) newIndex[v] = kNone;
   return level;
 }

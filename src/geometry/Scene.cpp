@@ -180,6 +180,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   for (size_t face = 0; face < faceCount; ++face) {
     AddFaceTriangles(scene, face, cornersScratch, trianglesScratch);
   }
+  scene.clusters = BuildClusters(scene);
   scene.convexClosedSolid = convex && !scene.triangles.empty();
   return scene;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/Clusters.h"
 #include "geometry/Mat4.h"
 #include "geometry/Mesh.h"
 #include "geometry/SceneEdges.h"
@@ -41,6 +42,7 @@ struct Scene {
   std::vector<SceneTriangle> triangles;
   std::vector<FacePlane> facePlanesWorld;    ///< per face, world space
   std::vector<uint32_t> faceTriangleStarts;  ///< FaceCount() + 1 entries into triangles
+  SceneClusters clusters;  ///< the triangles in runs, for culling whole runs per frame
   Mesh mesh;  ///< the source model (closed parts outward), for exact references and export
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,6 +39,11 @@ struct RenderVariant {
   /// Samples per cell, k across by m down; 0 x 0: the glyph mode's own grid.
   /// More samples than the mode's grid suit ramp only (glyph from the mean intensity).
   SampleGrid samples{0, 0};
+  /// zbuffer and cull draw cluster by cluster (src/raster/ClusterStage); false:
+  /// the plain face-by-face loop, one thread, the reference the tests compare with.
+  bool clusters = true;
+  /// Whole clusters that face away or cover no sample are skipped (exact).
+  bool clusterCulling = true;
 };
 
 /// Everything about how a frame is drawn that is not the camera.
@@ -57,6 +63,11 @@ struct RenderOptions {
   /// False: the depth buffer need not hold the frame's depth afterwards (only
   /// the json dump reads it), so methods that need no depth test skip it.
   bool keepDepth = true;
+  /// Threads drawing the frame: 0 every core; big scenes only (ClusterStage).
+  /// The frame is the same whatever the count.
+  int threads = 0;
+  /// Scenes with fewer triangles draw on one thread: waking threads costs more.
+  size_t threadsFromTriangles = 20000;
 };
 
 }  // namespace termshade

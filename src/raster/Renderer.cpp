@@ -25,6 +25,20 @@ bool NeedsDepth(const RenderOptions& options) {
   return options.keepDepth || options.method == Method::kZBuffer;
 }
 
+// zbuffer and cull go cluster by cluster, except for the 16-bit depth variant
+// (its scale comes from every vertex of the scene).
+bool DrawsByCluster(const Scene& scene, const RenderOptions& options) {
+  return (options.method == Method::kZBuffer || options.method == Method::kCull) &&
+         options.variant.clusters && options.variant.depthFormat != DepthFormat::kFixed16InverseZ &&
+         ClusterStage::Usable(scene);
+}
+
+DepthRule SurfaceRule(const RenderOptions& options) {
+  return options.method == Method::kZBuffer ? DepthRule::kNearestWins
+         : options.keepDepth                ? DepthRule::kOverwrite
+                                            : DepthRule::kCoverOnly;
+}
+
 }  // namespace
 
 Method ResolvedMethod(const Scene& scene, Method method) {
@@ -52,8 +66,13 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   if (NeedsDepth(resolved)) depth.Clear();
   clipPlanes_ = MakeViewClipPlanes(camera.projection, NearDistance(scene));
   eyeWorld_ = EyePositionWorld(camera.view);
-  TransformVertices(scene, camera, resolved.variant, resolved.method == Method::kPainter);
   RenderStats stats;
+  if (DrawsByCluster(scene, resolved)) {
+    stats.trianglesDrawn = DrawClusters(scene, camera, resolved, depth, cells);
+    stats.facesVisible = ShadeCells(scene, resolved, cells);
+    return stats;
+  }
+  TransformVertices(scene, camera, resolved.variant, resolved.method == Method::kPainter);
   if (resolved.method == Method::kWire) {
     stats.trianglesDrawn = DrawEdges(scene, camera, resolved, depth, cells);
   } else {
@@ -184,9 +203,7 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const Rende
     }
     return drawn;
   }
-  const DepthRule rule = options.method == Method::kZBuffer ? DepthRule::kNearestWins
-                         : options.keepDepth                ? DepthRule::kOverwrite
-                                                            : DepthRule::kCoverOnly;
+  const DepthRule rule = SurfaceRule(options);
   // The hot loop: plain pointers, the in-view case inline, the rest out of line.
   const FacePlane* const planes = scene.facePlanesWorld.data();
   const uint32_t* const starts = scene.faceTriangleStarts.data();
@@ -213,6 +230,26 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const Rende
     }
   }
   return drawn;
+}
+
+int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const RenderOptions& options,
+                           DepthBuffer& depth, CellBuffer& cells) {
+  eyeFromWorld_ = EyeFromWorld(camera.view);
+  ClusterFrame frame;
+  frame.projection = camera.projection;
+  frame.eyeFromWorld = eyeFromWorld_;
+  frame.clipPlanes = clipPlanes_;
+  frame.eyeWorld = eyeWorld_;
+  frame.depthEncoding = {options.variant.depthFormat, 1.0F};
+  frame.rule = SurfaceRule(options);
+  frame.cullBackFaces = options.cullBackFaces;
+  frame.clusterCulling = options.variant.clusterCulling;
+  frame.floatGeometry = options.variant.floatGeometry;
+  frame.scanline = options.variant.scanline;
+  frame.threadsFromTriangles = options.threadsFromTriangles;
+  // The scanline variant steps rows in float from its first row: one band only.
+  const int threads = options.variant.scanline ? 1 : ResolvedThreadCount(options.threads);
+  return clusterStage_.Draw(scene, frame, threads, depth, cells);
 }
 
 int Renderer::DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,

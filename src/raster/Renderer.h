@@ -8,6 +8,7 @@
 #include "geometry/ClipPolygon.h"
 #include "geometry/Scene.h"
 #include "raster/CellBuffer.h"
+#include "raster/ClusterStage.h"
 #include "raster/DepthBuffer.h"
 #include "raster/GlyphStage.h"
 #include "raster/RenderOptions.h"
@@ -54,6 +55,8 @@ class Renderer {
                    DepthBuffer& depth, CellBuffer& cells);
   int DrawSurfaces(const Scene& scene, const Camera& camera, const RenderOptions& options,
                    DepthBuffer& depth, CellBuffer& cells);
+  int DrawClusters(const Scene& scene, const Camera& camera, const RenderOptions& options,
+                   DepthBuffer& depth, CellBuffer& cells);
   int DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,
                 DepthBuffer& depth, CellBuffer& cells);
   int ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells);
@@ -67,6 +70,7 @@ class Renderer {
   CellBuffer fineCells_;  ///< several samples a cell: the frame at k x m samples a cell
   DepthBuffer fineDepth_;
   GlyphStage glyphStage_;
+  ClusterStage clusterStage_;
   SampleGrid lastGrid_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;

@@ -68,42 +68,44 @@ struct DepthInterpolator {
 template <DepthFormat kFormat, DepthRule kRule>
 int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                   uint32_t faceNumber, DepthBuffer& depth, CellBuffer& cells,
-                  const DepthEncoding& encoding);
+                  const DepthEncoding& encoding, RowRange rows);
 
 template <DepthRule kRule>
 int RasterizeWithRule(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                       uint32_t faceNumber, DepthBuffer& depth, CellBuffer& cells,
-                      const DepthEncoding& encoding) {
+                      const DepthEncoding& encoding, RowRange rows) {
   switch (encoding.format) {
     case DepthFormat::kLinearZ:
       return RasterizeWith<DepthFormat::kLinearZ, kRule>(a, b, c, faceNumber, depth, cells,
-                                                         encoding);
+                                                         encoding, rows);
     case DepthFormat::kFixed16InverseZ:
       return RasterizeWith<DepthFormat::kFixed16InverseZ, kRule>(a, b, c, faceNumber, depth, cells,
-                                                                 encoding);
+                                                                 encoding, rows);
     case DepthFormat::kFloatInverseZ:
       break;
   }
   return RasterizeWith<DepthFormat::kFloatInverseZ, kRule>(a, b, c, faceNumber, depth, cells,
-                                                           encoding);
+                                                           encoding, rows);
 }
 
 }  // namespace
 
 int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                       uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
-                      const DepthEncoding& encoding) {
+                      const DepthEncoding& encoding, RowRange rows) {
   switch (rule) {
     case DepthRule::kOverwrite:
-      return RasterizeWithRule<DepthRule::kOverwrite>(a, b, c, faceNumber, depth, cells, encoding);
+      return RasterizeWithRule<DepthRule::kOverwrite>(a, b, c, faceNumber, depth, cells, encoding,
+                                                      rows);
     case DepthRule::kCoverOnly:
       // No depth: the format does not matter.
       return RasterizeWith<DepthFormat::kFloatInverseZ, DepthRule::kCoverOnly>(
-          a, b, c, faceNumber, depth, cells, encoding);
+          a, b, c, faceNumber, depth, cells, encoding, rows);
     case DepthRule::kNearestWins:
       break;
   }
-  return RasterizeWithRule<DepthRule::kNearestWins>(a, b, c, faceNumber, depth, cells, encoding);
+  return RasterizeWithRule<DepthRule::kNearestWins>(a, b, c, faceNumber, depth, cells, encoding,
+                                                    rows);
 }
 
 namespace {
@@ -111,7 +113,7 @@ namespace {
 template <DepthFormat kFormat, DepthRule kRule>
 int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                   uint32_t faceNumber, DepthBuffer& depth, CellBuffer& cells,
-                  const DepthEncoding& encoding) {
+                  const DepthEncoding& encoding, RowRange rows) {
   // Step 1: the cells whose samples the bounding box holds; most triangles
   // of a fine mesh hold none and stop here.
   int col0 = 0, col1 = 0, row0 = 0, row1 = 0;
@@ -119,6 +121,8 @@ int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVert
   if (col0 > col1) return 0;
   SampleRange(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), cells.HeightCells(), row0,
               row1);
+  row0 = std::max(row0, rows.first);
+  row1 = std::min(row1, rows.end - 1);
   if (row0 > row1) return 0;
 
   // Step 2: orient clockwise on screen (positive area); drop empty triangles.

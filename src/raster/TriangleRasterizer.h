@@ -50,13 +50,21 @@ enum class DepthRule {
   kCoverOnly,    ///< as kOverwrite, the depth buffer neither read nor written
 };
 
+/// The rows [first, end) a rasterizer may write: one screen band of a
+/// threaded frame, or every row.
+struct RowRange {
+  int first = 0;
+  int end = 1 << 30;
+};
+
 /// Covers the cell-center samples inside the triangle (either winding) with
 /// faceNumber, by the top-left fill rule on exact integer edge functions, so
 /// triangles sharing an edge cover each sample on it exactly once. Returns
-/// the number of samples written.
+/// the number of samples written. Within `rows` only; each sample gets the
+/// same value whatever the range (the edge functions are exact integers).
 int RasterizeTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                       uint32_t faceNumber, DepthRule rule, DepthBuffer& depth, CellBuffer& cells,
-                      const DepthEncoding& encoding = {});
+                      const DepthEncoding& encoding = {}, RowRange rows = {});
 
 /// The classic scanline algorithm of course notes, kept for comparison:
 /// vertices sorted by row, edge x and w stepped incrementally in float per

@@ -57,6 +57,16 @@ Frame RenderFrame(const Scene& scene, double theta, double phi, int widthCells, 
   return frame;
 }
 
+Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads) {
+  Mesh mesh;
+  for (const auto& quad : quads) {
+    const auto base = static_cast<uint32_t>(mesh.verticesFile.size());
+    for (const Vec3& p : quad) mesh.verticesFile.push_back(p);
+    mesh.AddFace(std::array<uint32_t, 4>{base, base + 1, base + 2, base + 3});
+  }
+  return mesh;
+}
+
 std::string FrameText(Mesh mesh) {
   mesh.upAxisFile = UpAxis::kPlusZ;
   const Scene scene = PrepareScene(std::move(mesh));

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "geometry/Camera.h"
 #include "geometry/Scene.h"
@@ -21,6 +23,9 @@ Mesh LoadMesh(const std::string& relative);
 
 /// Loads and prepares a model from the source tree; fails the test on error.
 Scene LoadScene(const std::string& relative);
+
+/// One four-cornered face per quad, each with its own vertices.
+Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads);
 
 /// A rendered frame with its camera.
 struct Frame {
