@@ -120,6 +120,23 @@ void AddUpOption(CLI::App& command, std::optional<termshade::UpAxis>& upAxis) {
       ->type_name("AXIS");
 }
 
+void AddMemoryBudgetOption(CLI::App& command, size_t& budgetBytes) {
+  command
+      .add_option_function<std::string>(
+          "--memory-budget",
+          [&budgetBytes](const std::string& text) {
+            const auto bytes = termshade::ParseByteCount(text);
+            if (!bytes) {
+              throw CLI::ValidationError("--memory-budget",
+                                         "expected a size such as 4G, 512M or 1000000 (bytes)");
+            }
+            budgetBytes = *bytes;
+          },
+          "most memory loading may take, e.g. 4G or 512M (default: TERMSHADE_MEMORY_BUDGET, "
+          "else 2G); a model needing more is refused")
+      ->type_name("SIZE");
+}
+
 void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
   AddSizeOption(command, options);
   command.add_option("--cell-aspect", options.cellAspect, "cell height / cell width (default 2.0)")
@@ -188,6 +205,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.render.threads = look.threads;
   if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   viewer.upAxis = look.upAxis;
+  viewer.memoryBudgetBytes = look.memoryBudgetBytes;
   viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
   viewer.theta = look.theta;
   viewer.phi = look.phi;
@@ -216,6 +234,7 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(0.25, 8.0));
   AddLookOptions(app, viewerLook);
   AddUpOption(app, viewerLook.upAxis);
+  AddMemoryBudgetOption(app, viewerLook.memoryBudgetBytes);
   AddAngleOption(app, "--theta", viewerLook.theta, "starting eye azimuth, radians or Ndeg (0.3)");
   AddAngleOption(app, "--phi", viewerLook.phi, "starting eye polar angle, radians or Ndeg (1.3)");
 
@@ -243,20 +262,7 @@ int Run(int argc, char** argv) {
                    "the model's format as an extension (stl, obj, ...) where the name and "
                    "content cannot tell it (standard input)")
       ->type_name("EXT");
-  renderCommand
-      ->add_option_function<std::string>(
-          "--memory-budget",
-          [&render](const std::string& text) {
-            const auto bytes = termshade::ParseByteCount(text);
-            if (!bytes) {
-              throw CLI::ValidationError("--memory-budget",
-                                         "expected a size such as 4G, 512M or 1000000 (bytes)");
-            }
-            render.memoryBudgetBytes = *bytes;
-          },
-          "most memory loading may take, e.g. 4G or 512M (default: TERMSHADE_MEMORY_BUDGET, "
-          "else 2G); a model needing more is refused")
-      ->type_name("SIZE");
+  AddMemoryBudgetOption(*renderCommand, render.memoryBudgetBytes);
 
   renderCommand
       ->add_option("--reader", render.reader,

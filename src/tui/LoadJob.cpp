@@ -5,11 +5,11 @@
 
 namespace termshade {
 
-LoadJob::LoadJob(std::string path, std::optional<UpAxis> upAxis)
+LoadJob::LoadJob(std::string path, std::optional<UpAxis> upAxis, size_t memoryBudgetBytes)
     : path_(std::move(path)), shared_(std::make_shared<Shared>()) {
   // The worker holds its own reference to the shared state (see ~LoadJob).
-  worker_ = StartWorkerThread([shared = shared_, path = path_, upAxis] {
-    Load(*shared, path, upAxis);
+  worker_ = StartWorkerThread([shared = shared_, path = path_, upAxis, memoryBudgetBytes] {
+    Load(*shared, path, upAxis, memoryBudgetBytes);
     Finish(*shared);
   });
 }
@@ -24,8 +24,10 @@ LoadJob::LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis up
   });
 }
 
-void LoadJob::Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis) {
+void LoadJob::Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis,
+                   size_t memoryBudgetBytes) {
   LoadOptions options;
+  if (memoryBudgetBytes > 0) options.memoryBudgetBytes = memoryBudgetBytes;
   options.cancel = &shared.cancel;
   options.progress = [&shared](double share) { shared.progress.store(share); };
   Loaded<Mesh> mesh = LoadViewerMesh(path, options);

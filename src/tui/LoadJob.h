@@ -20,8 +20,9 @@ namespace termshade {
 /// other descriptors.
 class LoadJob {
  public:
-  /// upAxis: the viewer's --up, else each file's own (SPEC 10).
-  LoadJob(std::string path, std::optional<UpAxis> upAxis);
+  /// upAxis: the viewer's --up, else each file's own (SPEC 10); memoryBudgetBytes:
+  /// the most the load may take (0: DefaultMemoryBudgetBytes()).
+  LoadJob(std::string path, std::optional<UpAxis> upAxis, size_t memoryBudgetBytes = 0);
   /// The scene's model prepared again, turned so that `upAxis` is up.
   LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis upAxis);
   /// Joins a finished worker; asks an unfinished one to stop and lets it end
@@ -55,7 +56,8 @@ class LoadJob {
     std::optional<Loaded<Scene>> result;  ///< written by the worker before finished
     ReadyPipe ready;
   };
-  static void Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis);
+  static void Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis,
+                   size_t memoryBudgetBytes);
   static void Finish(Shared& shared);
 
   std::string path_;

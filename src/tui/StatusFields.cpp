@@ -60,7 +60,8 @@ std::string ComposeViewerStatus(const StatusFields& fields, int widthCells) {
   }
   if (!fields.detail.empty())
     segments.insert(segments.begin() + 1, {fields.detail, kDetail, false});
-  if (!fields.glyphs.empty()) segments.insert(segments.begin() + 1, {fields.glyphs, kGlyphs, false});
+  if (!fields.glyphs.empty())
+    segments.insert(segments.begin() + 1, {fields.glyphs, kGlyphs, false});
   return ComposeStatusLine(std::move(segments), widthCells);
 }
 

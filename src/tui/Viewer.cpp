@@ -138,7 +138,8 @@ class EventLoop {
     if (jobRequest_.turnTo) {
       job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.SharedScene(), *jobRequest_.turnTo);
     } else {
-      job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.UpAxisOverride());
+      job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.UpAxisOverride(),
+                                       state_.MemoryBudgetBytes());
     }
     shownLoadingText_.clear();
     dirty_ = true;

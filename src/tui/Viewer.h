@@ -19,9 +19,10 @@ struct ViewerOptions {
   ColourMode colour = ColourMode::kAuto;
   RenderOptions render;
   std::optional<GlyphMode> glyphs;  ///< unset: PickGlyphMode for the terminal
-  std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
+  std::optional<UpAxis> upAxis;     ///< unset: each file's own (SPEC 10)
   /// auto: levels of detail built on a worker after a big model's first frame.
   DetailMode detail = DetailMode::kAuto;
+  size_t memoryBudgetBytes = 0;  ///< --memory-budget; 0: DefaultMemoryBudgetBytes()
   double theta = 0.3;            ///< the view `r` returns to, radians (SPEC 2)
   double phi = 1.3;
 };

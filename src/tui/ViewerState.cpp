@@ -41,6 +41,7 @@ ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
                       : options.colour),
       colourOn_(options.colour != ColourMode::kNone && options.colour != ColourMode::kAuto),
       upAxis_(options.upAxis),
+      memoryBudgetBytes_(options.memoryBudgetBytes),
       startTheta_(options.theta),
       startPhi_(options.phi) {
   render_.keepDepth = false;  // the screen shows glyphs only
