@@ -34,8 +34,8 @@ DumpComparison CompareJsonDump(const Scene& scene, Method method, double theta, 
   // eyeFromFile takes file coordinates where the pipeline takes them.
   const auto& m = dump["camera"]["eyeFromFile"];
   const Mat4 eyeFromWorld = EyeFromWorld(frame.camera.view);
-  for (size_t v = 0; v < scene.mesh.verticesFile.size(); ++v) {
-    const Vec3 p = scene.mesh.verticesFile[v];
+  for (size_t v = 0; v < scene.verticesWorld.size(); ++v) {
+    const Vec3 p = scene.VertexFile(v);
     const Vec3 expected = TransformPoint(eyeFromWorld, scene.verticesWorld[v]);
     for (int row = 0; row < 3; ++row) {
       const double actual = double(m[4 * row]) * p.x + double(m[4 * row + 1]) * p.y +

@@ -177,7 +177,7 @@ TEST(HardCases, ParallelPlatesAtDecreasingGaps) {
         {{{gap, -1, -1}, {gap, 1, -1}, {gap, 1, 1}, {gap, -1, 1}}},
     }));
     Scene centered = scene;
-    centered.verticesWorld = scene.mesh.verticesFile;
+    centered.verticesWorld = scene.SourceMesh().verticesFile;
     const Camera camera = CameraLooking({5.0, 0.2, 1.4}, 2.9, 5.0);
     RenderOptions options;
     const Frame frame = RenderWith(centered, camera, options);

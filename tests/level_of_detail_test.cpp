@@ -49,10 +49,11 @@ TEST(LevelOfDetail, LevelsAreValidMeshesWithFewerTrianglesEach) {
     // Indices in range, one face per triangle, non-degenerate mostly.
     ASSERT_EQ(scene.FaceCount(), scene.triangles.size());
     ASSERT_EQ(scene.faceTriangleStarts.size(), scene.FaceCount() + 1);
-    ASSERT_EQ(scene.mesh.FaceCount(), scene.FaceCount());
-    ASSERT_EQ(scene.mesh.verticesFile.size(), scene.verticesWorld.size());
+    const Mesh source = scene.SourceMesh();
+    ASSERT_EQ(source.FaceCount(), scene.FaceCount());
+    ASSERT_EQ(source.verticesFile.size(), scene.verticesWorld.size());
     ASSERT_EQ(level.sourceFaces.size(), scene.FaceCount());
-    ASSERT_EQ(scene.mesh.faceColors.size(), scene.FaceCount());
+    ASSERT_EQ(scene.source.faceColors.size(), scene.FaceCount());
     for (size_t t = 0; t < scene.triangles.size(); ++t) {
       const SceneTriangle& triangle = scene.triangles[t];
       ASSERT_EQ(triangle.face, t);
@@ -60,7 +61,7 @@ TEST(LevelOfDetail, LevelsAreValidMeshesWithFewerTrianglesEach) {
       for (uint32_t v : triangle.vertices) ASSERT_LT(v, scene.verticesWorld.size());
       ASSERT_LT(level.sourceFaces[t], exact.FaceCount());
       // The colour is the source face's.
-      ASSERT_EQ(scene.mesh.faceColors[t], exact.mesh.faceColors[level.sourceFaces[t]]);
+      ASSERT_EQ(scene.source.faceColors[t], exact.source.faceColors[level.sourceFaces[t]]);
     }
     // The same frame of reference: the camera fits it exactly as the exact scene.
     EXPECT_EQ(scene.diagonalModelUnits, exact.diagonalModelUnits);

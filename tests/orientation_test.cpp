@@ -37,7 +37,7 @@ TEST(OutwardOrientation, ReversedCubeDrawsAsTheOutwardCube) {
   const Scene inward = PrepareScene(Reversed(Cube()));
   EXPECT_EQ(outward.facesTurnedOutward, 0U);
   EXPECT_EQ(inward.facesTurnedOutward, 6U);
-  EXPECT_EQ(Corners(inward.mesh), Corners(outward.mesh));
+  EXPECT_EQ(Corners(inward.SourceMesh()), Corners(outward.SourceMesh()));
   EXPECT_TRUE(inward.convexClosedSolid);
   for (Method method : {Method::kZBuffer, Method::kPainter, Method::kCull, Method::kAuto}) {
     RenderOptions options;
@@ -59,14 +59,14 @@ TEST(OutwardOrientation, OpenSheetKeepsItsWinding) {
   const std::vector<uint32_t> before = Corners(open);
   const Scene scene = PrepareScene(open);
   EXPECT_EQ(scene.facesTurnedOutward, 0U);
-  EXPECT_EQ(Corners(scene.mesh), before);
+  EXPECT_EQ(Corners(scene.SourceMesh()), before);
 }
 
 TEST(OutwardOrientation, InconsistentWindingIsLeftAlone) {
   const Mesh mixed = Reversed(Reversed(Cube()), 0, 1);  // one face runs the other way
   const Scene scene = PrepareScene(mixed);
   EXPECT_EQ(scene.facesTurnedOutward, 0U);
-  EXPECT_EQ(Corners(scene.mesh), Corners(mixed));
+  EXPECT_EQ(Corners(scene.SourceMesh()), Corners(mixed));
 }
 
 TEST(OutwardOrientation, OnlyTheInsideOutPartTurns) {
@@ -84,7 +84,7 @@ TEST(OutwardOrientation, OnlyTheInsideOutPartTurns) {
   EXPECT_EQ(scene.facesTurnedOutward, 6U);
   for (size_t f = 0; f < 12; ++f) {
     const Vec3 cubeCenter = scene.verticesWorld[f < 6 ? 0 : 8] + Vec3{0.5, 0.5, 0.5};
-    const Vec3 corner = scene.verticesWorld[scene.mesh.Face(f)[0]];
+    const Vec3 corner = scene.verticesWorld[scene.Face(f)[0]];
     EXPECT_GT(Dot(scene.facePlanesWorld[f].normal, corner - cubeCenter), 0.0) << f;
   }
 }
@@ -104,7 +104,7 @@ TEST(OutwardOrientation, InsideOutRealModelTurnsOnceAndDrawsWithCulling) {
   const Scene scene =
       PrepareScene(test::LoadMesh("tests/models/real/wuson_inside_out.off"), UpAxis::kPlusZ);
   EXPECT_GT(scene.facesTurnedOutward, scene.FaceCount() / 2);
-  EXPECT_EQ(PrepareScene(scene.mesh).facesTurnedOutward, 0U);  // done once, for good
+  EXPECT_EQ(PrepareScene(scene.SourceMesh()).facesTurnedOutward, 0U);  // done once, for good
   // Outward, culling back faces hides almost nothing the Z-buffer shows with
   // both sides drawn (the file has a few open parts, seen through their gaps).
   RenderOptions culled, twoSided;

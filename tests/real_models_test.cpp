@@ -67,7 +67,7 @@ TEST_P(RealModelFrames, InTheFilesOwnColours) {
   options.twoColour = true;  // as the ansi dump draws
   const test::Frame frame = test::RenderFrame(scene, 0.3, 1.3, 80, 24, options);
   std::string actual;
-  AppendAnsiFrame(frame.cells, scene.mesh.faceColors, options.ramp.LevelCount(),
+  AppendAnsiFrame(frame.cells, scene.source.faceColors, options.ramp.LevelCount(),
                   ColourMode::kTrueColour, actual);
   ExpectGolden("real_" + Stem(model.file) + ".zbuffer.default.ansi", actual);
 }

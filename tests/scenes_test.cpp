@@ -27,7 +27,7 @@ double SignedVolume(const Scene& scene) {
 bool IsClosedManifold(const Scene& scene) {
   std::map<std::pair<uint32_t, uint32_t>, int> directed;
   for (size_t f = 0; f < scene.FaceCount(); ++f) {
-    const auto face = scene.mesh.Face(f);
+    const auto face = scene.Face(f);
     for (size_t i = 0; i < face.size(); ++i) ++directed[{face[i], face[(i + 1) % face.size()]}];
   }
   for (const auto& [edge, count] : directed) {

@@ -159,8 +159,8 @@ TEST(UpAxis, JsonEyeFromFileMapsFileCoordinatesOfATurnedModel) {
   AppendJsonFrame(frame.cells, frame.depth, scene, frame.camera, options, text);
   const auto m = nlohmann::json::parse(text)["camera"]["eyeFromFile"];
   const Mat4 eyeFromWorld = EyeFromWorld(frame.camera.view);
-  for (size_t v = 0; v < scene.mesh.verticesFile.size(); v += 7) {
-    const Vec3 p = scene.mesh.verticesFile[v];
+  for (size_t v = 0; v < scene.verticesWorld.size(); v += 7) {
+    const Vec3 p = scene.VertexFile(v);
     const Vec3 expected = TransformPoint(eyeFromWorld, scene.verticesWorld[v]);
     const double actual[3] = {
         double(m[0]) * p.x + double(m[1]) * p.y + double(m[2]) * p.z + double(m[3]),

@@ -376,7 +376,7 @@ TEST(ViewerState, UpKeyCyclesTheAxisAndKeepsTheView) {
   ASSERT_TRUE(request.has_value());
   ASSERT_TRUE(request->turnTo.has_value());
   EXPECT_EQ(*request->turnTo, UpAxis::kPlusY);
-  state.FinishLoad(*request, PrepareScene(Mesh(state.CurrentScene().mesh), *request->turnTo));
+  state.FinishLoad(*request, PrepareScene(state.CurrentScene().SourceMesh(), *request->turnTo));
   EXPECT_EQ(state.CurrentScene().upAxis, UpAxis::kPlusY);
   EXPECT_EQ(state.Message(), "up axis +y");
   EXPECT_EQ(state.View().theta, view.theta);

@@ -57,8 +57,8 @@ void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& 
   std::string& text = sink.text;
   if (format == FrameFormat::kText) AppendTextFrame(sink.cells, text);
   if (format == FrameFormat::kAnsi) {
-    AppendAnsiFrame(sink.cells, scene.mesh.faceColors, renderOptions.ramp.LevelCount(), colourMode,
-                    text);
+    AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
+                    colourMode, text);
   }
   if (format != FrameFormat::kJson) return;
   if (sink.renderer.LastSampleGrid().Count() <= 1) {

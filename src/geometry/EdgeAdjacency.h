@@ -1,19 +1,34 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
-#include "geometry/Mesh.h"
+#include "geometry/HugePages.h"
 
 namespace termshade {
 
-/// One face's use of an undirected edge.
-struct EdgeUse {
+/// One face's use of an undirected edge, in 8 bytes (faces below 2^30).
+class EdgeUse {
+ public:
+  EdgeUse() = default;
+  EdgeUse(uint32_t highVertex, uint32_t face, bool forward, bool hidden)
+      : highVertex(highVertex),
+        faceFlags_(face << 2 | static_cast<uint32_t>(forward) << 1 |
+                   static_cast<uint32_t>(hidden)) {}
   uint32_t highVertex = 0;  ///< the edge's larger vertex number
-  uint32_t face = 0;
-  bool forward = false;  ///< the face runs from the smaller vertex to the larger
-  bool hidden = false;   ///< the face hides the edge as a drawn line
+  uint32_t Face() const { return faceFlags_ >> 2; }
+  /// The face runs from the smaller vertex to the larger.
+  bool Forward() const { return (faceFlags_ & 2) != 0; }
+  /// The face hides the edge as a drawn line.
+  bool Hidden() const { return (faceFlags_ & 1) != 0; }
+  /// Orders by larger vertex, then face.
+  uint64_t SortKey() const { return uint64_t{highVertex} << 32 | faceFlags_; }
+
+ private:
+  uint32_t faceFlags_ = 0;
 };
 
 /// Every face edge of a mesh, grouped by undirected edge: sorted arrays
@@ -21,7 +36,12 @@ struct EdgeUse {
 /// larger vertex and face). Zero-length edges are left out.
 class EdgeAdjacency {
  public:
-  explicit EdgeAdjacency(const Mesh& mesh);
+  static constexpr size_t kMaxFaces = size_t{1} << 30;
+
+  /// faces: anything with FaceCount(), Face(f) (corner indices below
+  /// vertexCount) and EdgeHidden(f, i) (Mesh, FaceList, Scene).
+  template <typename Faces>
+  EdgeAdjacency(size_t vertexCount, const Faces& faces);
 
   /// Face edges in all (each undirected edge once per face that has it).
   size_t UseCount() const { return uses_.size(); }
@@ -46,5 +66,43 @@ class EdgeAdjacency {
   std::vector<uint32_t> starts_;  ///< per vertex, into uses_; one more entry than vertices
   std::vector<EdgeUse> uses_;
 };
+
+template <typename Faces>
+EdgeAdjacency::EdgeAdjacency(size_t vertexCount, const Faces& faces) {
+  const size_t faceCount = faces.FaceCount();
+  if (faceCount >= kMaxFaces) throw std::length_error("more than 2^30 faces");
+  auto forEachFaceEdge = [&faces, faceCount](auto&& use) {
+    for (uint32_t face = 0; face < faceCount; ++face) {
+      const auto corners = faces.Face(face);
+      for (size_t i = 0; i < corners.size(); ++i) {
+        const uint32_t a = corners[i], b = corners[(i + 1) % corners.size()];
+        if (a != b) use(a, b, face, i);
+      }
+    }
+  };
+  // Step 1: how many edges start at each smaller vertex.
+  starts_.reserve(vertexCount + 1);
+  AdviseHugePages(starts_);
+  starts_.assign(vertexCount + 1, 0);
+  forEachFaceEdge([&](uint32_t a, uint32_t b, uint32_t, size_t) { ++starts_[std::min(a, b) + 1]; });
+  for (size_t v = 0; v < vertexCount; ++v) starts_[v + 1] += starts_[v];
+
+  // Step 2: place each use in its vertex's range.
+  uses_.reserve(starts_.back());
+  AdviseHugePages(uses_);
+  uses_.resize(starts_.back());
+  {
+    std::vector<uint32_t> filled(starts_.begin(), starts_.end() - 1);
+    forEachFaceEdge([&](uint32_t a, uint32_t b, uint32_t face, size_t i) {
+      uses_[filled[std::min(a, b)]++] = {std::max(a, b), face, a < b, faces.EdgeHidden(face, i)};
+    });
+  }
+
+  // Step 3: within a vertex, by larger vertex, then face.
+  for (size_t v = 0; v < vertexCount; ++v) {
+    std::sort(uses_.begin() + starts_[v], uses_.begin() + starts_[v + 1],
+              [](const EdgeUse& p, const EdgeUse& q) { return p.SortKey() < q.SortKey(); });
+  }
+}
 
 }  // namespace termshade

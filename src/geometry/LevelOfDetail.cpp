@@ -90,8 +90,10 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
   scene.upAxisOverridden = exact.upAxisOverridden;
   scene.diagonalModelUnits = exact.diagonalModelUnits;
   scene.radiusModelUnits = exact.radiusModelUnits;
-  scene.mesh.name = exact.mesh.name;
-  scene.mesh.upAxisFile = exact.mesh.upAxisFile;
+  scene.source.name = exact.source.name;
+  scene.source.upAxisFile = exact.source.upAxisFile;
+  scene.source.shiftZUp = exact.source.shiftZUp;
+  std::vector<Vec3> verticesFile;
   level.errorModelUnits = errorModelUnits;
 
   // Step 1: the vertices used, in first-use order.
@@ -101,7 +103,7 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     newIndex[v] = static_cast<uint32_t>(used.size());
     used.push_back(v);
     scene.verticesWorld.push_back(exact.verticesWorld[v]);
-    scene.mesh.verticesFile.push_back(exact.mesh.verticesFile[v]);
+    verticesFile.push_back(exact.VertexFile(v));
   }
 
   // Step 2: each triangle a face, with its plane and its source face.
@@ -110,9 +112,10 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
   scene.facePlanesWorld.reserve(triangleCount);
   scene.faceTriangleStarts.reserve(triangleCount + 1);
   scene.faceTriangleStarts.push_back(0);
-  scene.mesh.faceCorners.reserve(indices.size());
+  FaceList& faces = scene.source.faces;  // kept: the triangles run {0, 1, 2}
+  faces.corners.reserve(indices.size());
   level.sourceFaces.reserve(triangleCount);
-  const bool coloured = !exact.mesh.faceColors.empty();
+  const bool coloured = !exact.source.faceColors.empty();
   for (size_t t = 0; t < triangleCount; ++t) {
     const uint32_t* corners = &indices[3 * t];
     std::array<uint32_t, 3> local{newIndex[corners[0]], newIndex[corners[1]], newIndex[corners[2]]};
@@ -140,12 +143,12 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     scene.facePlanesWorld.push_back({normal, Dot(normal, (a + b + c) * (1.0 / 3.0))});
     scene.triangles.push_back({local, face});
     scene.faceTriangleStarts.push_back(face + 1);
-    scene.mesh.faceCorners.insert(scene.mesh.faceCorners.end(), local.begin(), local.end());
-    scene.mesh.faceStarts.push_back(static_cast<uint32_t>(scene.mesh.faceCorners.size()));
+    faces.corners.insert(faces.corners.end(), local.begin(), local.end());
     level.sourceFaces.push_back(sourceFace);
-    if (coloured) scene.mesh.faceColors.push_back(exact.mesh.faceColors[sourceFace]);
+    if (coloured) scene.source.faceColors.push_back(exact.source.faceColors[sourceFace]);
   }
-  scene.mesh.edgeHidden.assign(scene.mesh.faceCorners.size(), 0);
+  faces.faceCount = scene.triangles.size();
+  scene.source.KeepVerticesFile(scene.upAxis, scene.verticesWorld, verticesFile);
   scene.clusters = BuildClusters(scene);
   for (const uint32_t v : used) newIndex[v] = kNone;
   return level;

@@ -34,6 +34,8 @@ struct Mesh {
   std::span<const uint32_t> Face(size_t face) const {
     return {faceCorners.data() + faceStarts[face], faceStarts[face + 1] - faceStarts[face]};
   }
+  /// The edge from corner i of the face to the next is not drawn as a line.
+  bool EdgeHidden(size_t face, size_t i) const { return edgeHidden[faceStarts[face] + i] != 0; }
   void AddFace(std::span<const uint32_t> corners, std::span<const uint8_t> hidden = {});
 };
 

@@ -25,8 +25,8 @@ class FaceParts {
 
 // Six times the signed volume under a face's fan of triangles (divergence
 // theorem; over a closed surface the sum is six times the enclosed volume).
-double SixVolumeUnderFace(const Mesh& mesh, size_t face, std::span<const Vec3> points) {
-  const auto corners = mesh.Face(face);
+double SixVolumeUnderFace(const FaceList& faces, size_t face, std::span<const Vec3> points) {
+  const auto corners = faces.Face(face);
   double sum = 0.0;
   for (size_t i = 1; i + 1 < corners.size(); ++i) {
     sum += Dot(points[corners[0]], Cross(points[corners[i]], points[corners[i + 1]]));
@@ -36,29 +36,43 @@ double SixVolumeUnderFace(const Mesh& mesh, size_t face, std::span<const Vec3> p
 
 }  // namespace
 
-void ReverseFace(Mesh& mesh, size_t face) {
-  const size_t start = mesh.faceStarts[face], end = mesh.faceStarts[face + 1];
+namespace {
+
+// Corners c0 c1 ... c(n-1) become c0 c(n-1) ... c1; the new edge j is the
+// old edge n-1-j run backwards, so the hidden flags (when kept) reverse as a whole.
+void ReverseCorners(std::vector<uint32_t>& corners, std::vector<uint8_t>& hidden, size_t start,
+                    size_t end) {
   if (end - start < 3) return;
-  // Corners c0 c1 ... c(n-1) become c0 c(n-1) ... c1; the new edge j is the
-  // old edge n-1-j run backwards, so the hidden flags reverse as a whole.
-  std::reverse(mesh.faceCorners.begin() + static_cast<std::ptrdiff_t>(start + 1),
-               mesh.faceCorners.begin() + static_cast<std::ptrdiff_t>(end));
-  std::reverse(mesh.edgeHidden.begin() + static_cast<std::ptrdiff_t>(start),
-               mesh.edgeHidden.begin() + static_cast<std::ptrdiff_t>(end));
+  std::reverse(corners.begin() + static_cast<std::ptrdiff_t>(start + 1),
+               corners.begin() + static_cast<std::ptrdiff_t>(end));
+  if (hidden.empty()) return;
+  std::reverse(hidden.begin() + static_cast<std::ptrdiff_t>(start),
+               hidden.begin() + static_cast<std::ptrdiff_t>(end));
 }
 
-size_t OrientClosedPartsOutward(Mesh& mesh, const EdgeAdjacency& edges,
+}  // namespace
+
+void ReverseFace(Mesh& mesh, size_t face) {
+  ReverseCorners(mesh.faceCorners, mesh.edgeHidden, mesh.faceStarts[face],
+                 mesh.faceStarts[face + 1]);
+}
+
+void ReverseFace(FaceList& faces, size_t face) {
+  ReverseCorners(faces.corners, faces.hidden, faces.Start(face), faces.Start(face + 1));
+}
+
+size_t OrientClosedPartsOutward(FaceList& faces, const EdgeAdjacency& edges,
                                 std::span<const Vec3> points) {
-  const size_t faceCount = mesh.FaceCount();
+  const size_t faceCount = faces.FaceCount();
   // Step 1: parts through shared edges; a face on an edge that is not used
   // exactly once each way marks its part open.
   FaceParts parts(faceCount);
   std::vector<uint8_t> openFace(faceCount, 0);
   edges.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
-    const bool closedEdge = uses.size() == 2 && uses[0].forward != uses[1].forward;
+    const bool closedEdge = uses.size() == 2 && uses[0].Forward() != uses[1].Forward();
     for (const EdgeUse& use : uses) {
-      parts.Join(use.face, uses[0].face);
-      if (!closedEdge) openFace[use.face] = 1;
+      parts.Join(use.Face(), uses[0].Face());
+      if (!closedEdge) openFace[use.Face()] = 1;
     }
   });
 
@@ -67,7 +81,7 @@ size_t OrientClosedPartsOutward(Mesh& mesh, const EdgeAdjacency& edges,
   std::vector<uint8_t> openPart(faceCount, 0);
   for (uint32_t f = 0; f < faceCount; ++f) {
     const uint32_t root = parts.Root(f);
-    sixVolume[root] += SixVolumeUnderFace(mesh, f, points);
+    sixVolume[root] += SixVolumeUnderFace(faces, f, points);
     openPart[root] = openPart[root] | openFace[f];
   }
 
@@ -77,7 +91,7 @@ size_t OrientClosedPartsOutward(Mesh& mesh, const EdgeAdjacency& edges,
   for (uint32_t f = 0; f < faceCount; ++f) {
     const uint32_t root = parts.Root(f);
     if (openPart[root] == 0 && sixVolume[root] < 0.0) {
-      ReverseFace(mesh, f);
+      ReverseFace(faces, f);
       ++reversed;
     }
   }

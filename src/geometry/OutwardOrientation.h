@@ -4,6 +4,7 @@
 #include <span>
 
 #include "geometry/EdgeAdjacency.h"
+#include "geometry/FaceList.h"
 #include "geometry/Mesh.h"
 #include "geometry/Vec3.h"
 
@@ -15,11 +16,12 @@ namespace termshade {
 /// Open or non-manifold parts keep their winding. points: one per mesh
 /// vertex, in any space that is a proper rotation plus shift of file space
 /// (best centered, for the volume's rounding). Returns the faces reversed.
-size_t OrientClosedPartsOutward(Mesh& mesh, const EdgeAdjacency& edges,
+size_t OrientClosedPartsOutward(FaceList& faces, const EdgeAdjacency& edges,
                                 std::span<const Vec3> points);
 
 /// Reverses a face's corners in place, keeping its first corner and each
 /// edge's hidden flag.
 void ReverseFace(Mesh& mesh, size_t face);
+void ReverseFace(FaceList& faces, size_t face);
 
 }  // namespace termshade

@@ -45,7 +45,7 @@ ReferenceRayCaster::ReferenceRayCaster(const Scene& scene, const Camera& camera,
   faces_.resize(scene.FaceCount());
   for (size_t f = 0; f < scene.FaceCount(); ++f) {
     FacePolygon& face = faces_[f];
-    for (uint32_t v : scene.mesh.Face(f)) {
+    for (uint32_t v : scene.Face(f)) {
       face.cornersEye.push_back(TransformPoint(eyeFromWorld, scene.verticesWorld[v]));
     }
     const Vec3 nWorld = scene.facePlanesWorld[f].normal;

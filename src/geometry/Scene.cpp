@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <span>
 #include <utility>
 
 #include "geometry/EdgeAdjacency.h"
+#include "geometry/FaceList.h"
 #include "geometry/FaceNormal.h"
 #include "geometry/HugePages.h"
 #include "geometry/OutwardOrientation.h"
@@ -38,9 +40,9 @@ Bounds FiniteBounds(const std::vector<Vec3>& points) {
 // The face's plane through its mean corner (exact for planar faces, a
 // least-squares-like compromise for slightly non-planar ones); zero when a
 // corner is not finite.
-FacePlane PlaneOfFace(const Scene& scene, size_t face) {
-  const auto corners = scene.mesh.Face(face);
-  const auto pointAt = [&](size_t i) { return scene.verticesWorld[corners[i]]; };
+template <typename Corners>
+FacePlane PlaneOfFace(const std::vector<Vec3>& verticesWorld, const Corners& corners) {
+  const auto pointAt = [&](size_t i) { return verticesWorld[corners[i]]; };
   bool finite = true;
   Vec3 mean;
   for (size_t i = 0; i < corners.size(); ++i) {
@@ -53,9 +55,10 @@ FacePlane PlaneOfFace(const Scene& scene, size_t face) {
 }
 
 // The face's triangles, none when a corner is not finite.
-void AddFaceTriangles(Scene& scene, size_t face, std::vector<Vec3>& cornersScratch,
+void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
+                      std::vector<Vec3>& cornersScratch,
                       std::vector<CornerTriangle>& trianglesScratch) {
-  const auto corners = scene.mesh.Face(face);
+  const auto corners = faces.Face(face);
   trianglesScratch.clear();
   cornersScratch.clear();
   bool finite = true;
@@ -71,71 +74,101 @@ void AddFaceTriangles(Scene& scene, size_t face, std::vector<Vec3>& cornersScrat
   scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
 }
 
-// Closed (every edge used once each way) and connected: the two faces of
-// each edge, or nullopt when the mesh is not such a surface (or has under 4
-// faces). The pairs let the edge uses be freed before the planes are built.
-std::optional<std::vector<std::array<uint32_t, 2>>> ClosedSurfaceFacePairs(
-    const Mesh& mesh, const EdgeAdjacency& adjacency) {
-  const size_t faceCount = mesh.FaceCount();
-  if (faceCount < 4) return std::nullopt;
+// Face f of faces is scene triangle f, as Scene::Face gives it back, and no
+// edge is hidden: the scene need not keep the faces.
+bool FacesAreTheTriangles(const Scene& scene, const FaceList& faces) {
+  if (!faces.starts.empty() || !faces.hidden.empty()) return false;
+  if (scene.triangles.size() != faces.FaceCount()) return false;
+  for (size_t f = 0; f < faces.FaceCount(); ++f) {
+    const auto& t = scene.triangles[f].vertices;
+    const uint32_t* c = faces.corners.data() + 3 * f;
+    if (scene.triangles[f].face != f || t[1] != c[0] || t[2] != c[1] || t[0] != c[2]) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Whether the faces form a closed (every edge used once each way) connected
+// surface, convex at every edge (each face's corners on or behind its
+// neighbour's plane): a convex solid, where facing decides visibility. The
+// planes are those Step 4 stores, computed here per edge so no face pairs
+// need be kept.
+bool ConvexClosedSurface(const std::vector<Vec3>& verticesWorld, const FaceList& faces,
+                         const EdgeAdjacency& adjacency, double diagonalModelUnits) {
+  const size_t faceCount = faces.FaceCount();
+  if (faceCount < 4) return false;
   std::vector<uint32_t> component(faceCount);
   for (uint32_t f = 0; f < faceCount; ++f) component[f] = f;
   auto root = [&](uint32_t f) {
     while (component[f] != f) f = component[f] = component[component[f]];
     return f;
   };
-  std::vector<std::array<uint32_t, 2>> pairs;
-  pairs.reserve(adjacency.UseCount() / 2);
-  AdviseHugePages(pairs);
-  bool closed = true;
-  adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
-    if (!closed) return;
-    if (uses.size() != 2 || uses[0].forward == uses[1].forward) {
-      closed = false;  // open, non-manifold or inconsistently wound
-      return;
-    }
-    const uint32_t f = uses[0].face, g = uses[1].face;
-    component[root(f)] = root(g);
-    pairs.push_back({f, g});
-  });
-  if (!closed) return std::nullopt;
-  for (uint32_t f = 0; f < faceCount; ++f) {
-    if (root(f) != root(0)) return std::nullopt;
-  }
-  return pairs;
-}
-
-// Convex at every edge: each face's corners lie on or behind its neighbour's
-// plane. With a closed connected surface, a convex solid, where facing
-// decides visibility.
-bool ConvexAtEveryEdge(const Scene& scene, std::span<const std::array<uint32_t, 2>> facePairs) {
-  const double tolerance = 1e-9 * std::max(1.0, scene.diagonalModelUnits);
+  const double tolerance = 1e-9 * std::max(1.0, diagonalModelUnits);
   auto behindPlane = [&](uint32_t f, uint32_t g) {
-    const FacePlane& plane = scene.facePlanesWorld[f];
+    const FacePlane plane = PlaneOfFace(verticesWorld, faces.Face(f));
     if (plane.normal == Vec3{}) return false;
-    for (uint32_t v : scene.mesh.Face(g)) {
-      if (Dot(plane.normal, scene.verticesWorld[v]) - plane.offset > tolerance) return false;
+    for (uint32_t v : faces.Face(g)) {
+      if (Dot(plane.normal, verticesWorld[v]) - plane.offset > tolerance) return false;
     }
     return true;
   };
-  return std::all_of(facePairs.begin(), facePairs.end(), [&](const std::array<uint32_t, 2>& pair) {
-    return behindPlane(pair[0], pair[1]) && behindPlane(pair[1], pair[0]);
+  bool closed = true, convex = true;
+  adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
+    if (!closed) return;
+    if (uses.size() != 2 || uses[0].Forward() == uses[1].Forward()) {
+      closed = false;  // open, non-manifold or inconsistently wound
+      return;
+    }
+    const uint32_t f = uses[0].Face(), g = uses[1].Face();
+    component[root(f)] = root(g);
+    convex = convex && behindPlane(f, g) && behindPlane(g, f);
   });
+  if (!closed || !convex) return false;
+  for (uint32_t f = 0; f < faceCount; ++f) {
+    if (root(f) != root(0)) return false;
+  }
+  return true;
 }
 
 }  // namespace
 
+Mesh Scene::SourceMesh() const {
+  Mesh mesh;
+  mesh.name = source.name;
+  mesh.upAxisFile = source.upAxisFile;
+  mesh.faceColors = source.faceColors;
+  mesh.segments = source.segments;
+  mesh.verticesFile.reserve(verticesWorld.size());
+  for (size_t v = 0; v < verticesWorld.size(); ++v) mesh.verticesFile.push_back(VertexFile(v));
+  std::vector<uint32_t> corners;
+  std::vector<uint8_t> hidden;
+  for (size_t f = 0; f < FaceCount(); ++f) {
+    const auto face = Face(f);
+    corners.assign(face.begin(), face.end());
+    hidden.clear();
+    for (size_t i = 0; i < face.size(); ++i) hidden.push_back(EdgeHidden(f, i) ? 1 : 0);
+    mesh.AddFace(corners, hidden);
+  }
+  return mesh;
+}
+
 Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   Scene scene;
   scene.name = mesh.name;
-  scene.mesh = std::move(mesh);
-  scene.upAxis = upOverride.value_or(scene.mesh.upAxisFile);
+  scene.upAxis = upOverride.value_or(mesh.upAxisFile);
   scene.upAxisOverridden = upOverride.has_value();
+  scene.source.name = std::move(mesh.name);
+  scene.source.upAxisFile = mesh.upAxisFile;
+  scene.source.faceColors = std::move(mesh.faceColors);
+  scene.source.segments = std::move(mesh.segments);
+  FaceList faces = TakeFaces(mesh);
 
-  // Step 1: world space is file space turned up (+z), centered on the bounding box.
-  scene.verticesWorld.reserve(scene.mesh.verticesFile.size());
+  // Step 1: world space is file space turned up (+z), centered on the bounding
+  // box; of the file's vertices, only those world space does not give back are kept.
+  scene.verticesWorld.reserve(mesh.verticesFile.size());
   AdviseHugePages(scene.verticesWorld);
-  for (const Vec3& p : scene.mesh.verticesFile) {
+  for (const Vec3& p : mesh.verticesFile) {
     scene.verticesWorld.push_back(ZUpFromFile(scene.upAxis, p));
   }
   const Bounds bounds = FiniteBounds(scene.verticesWorld);
@@ -147,29 +180,29 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     p = p - center;
     if (finite) scene.radiusModelUnits = std::max(scene.radiusModelUnits, Length(p));
   }
+  scene.source.shiftZUp = center;
+  scene.source.KeepVerticesFile(scene.upAxis, scene.verticesWorld, mesh.verticesFile);
+  std::vector<Vec3>().swap(mesh.verticesFile);
+  const size_t vertexCount = scene.verticesWorld.size();
 
   // Step 2: inside-out closed parts turned outward, once.
-  std::optional<EdgeAdjacency> adjacency(std::in_place, scene.mesh);
-  scene.facesTurnedOutward = OrientClosedPartsOutward(scene.mesh, *adjacency, scene.verticesWorld);
-  if (scene.facesTurnedOutward > 0) adjacency.emplace(scene.mesh);
+  auto adjacency = std::make_unique<EdgeAdjacency>(vertexCount, faces);
+  scene.facesTurnedOutward = OrientClosedPartsOutward(faces, *adjacency, scene.verticesWorld);
+  if (scene.facesTurnedOutward > 0) {
+    adjacency.reset();
+    adjacency = std::make_unique<EdgeAdjacency>(vertexCount, faces);
+  }
 
-  // Step 3: whether the model is a closed connected surface; the edge uses
-  // are freed before the planes and triangles take their place.
-  auto facePairs = ClosedSurfaceFacePairs(scene.mesh, *adjacency);
+  // Step 3: whether the model is a convex closed connected surface; the edge
+  // uses are freed before the triangles and planes take their place.
+  const bool convex =
+      ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits);
   adjacency.reset();
 
-  // Step 4: per-face planes, then whether the surface is convex at every edge.
-  const size_t faceCount = scene.mesh.FaceCount();
-  scene.facePlanesWorld.reserve(faceCount);
-  AdviseHugePages(scene.facePlanesWorld);
-  for (size_t face = 0; face < faceCount; ++face) {
-    scene.facePlanesWorld.push_back(PlaneOfFace(scene, face));
-  }
-  const bool convex = facePairs && ConvexAtEveryEdge(scene, *facePairs);
-  facePairs.reset();
-
-  // Step 5: per-face triangles (a face of n corners gives at most n - 2).
-  const size_t cornerCount = scene.mesh.faceCorners.size();
+  // Step 4: per-face triangles (a face of n corners gives at most n - 2); the
+  // faces are dropped when the triangles give them back.
+  const size_t faceCount = faces.FaceCount();
+  const size_t cornerCount = faces.corners.size();
   scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
   scene.faceTriangleStarts.reserve(faceCount + 1);
   AdviseHugePages(scene.triangles);
@@ -178,7 +211,19 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;
   for (size_t face = 0; face < faceCount; ++face) {
-    AddFaceTriangles(scene, face, cornersScratch, trianglesScratch);
+    AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch);
+  }
+  if (FacesAreTheTriangles(scene, faces)) {
+    faces.Clear();
+  } else {
+    scene.source.faces = std::move(faces);
+  }
+
+  // Step 5: per-face planes.
+  scene.facePlanesWorld.reserve(faceCount);
+  AdviseHugePages(scene.facePlanesWorld);
+  for (size_t face = 0; face < faceCount; ++face) {
+    scene.facePlanesWorld.push_back(PlaneOfFace(scene.verticesWorld, scene.Face(face)));
   }
   scene.clusters = BuildClusters(scene);
   scene.convexClosedSolid = convex && !scene.triangles.empty();

@@ -10,6 +10,7 @@
 #include "geometry/Mat4.h"
 #include "geometry/Mesh.h"
 #include "geometry/SceneEdges.h"
+#include "geometry/SceneSource.h"
 #include "geometry/UpAxis.h"
 
 namespace termshade {
@@ -43,7 +44,7 @@ struct Scene {
   std::vector<FacePlane> facePlanesWorld;    ///< per face, world space
   std::vector<uint32_t> faceTriangleStarts;  ///< FaceCount() + 1 entries into triangles
   SceneClusters clusters;  ///< the triangles in runs, for culling whole runs per frame
-  Mesh mesh;  ///< the source model (closed parts outward), for exact references and export
+  SceneSource source;  ///< the rest of the model (closed parts outward), where the arrays lack it
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex
   /// One closed, consistently oriented, connected surface with every edge
@@ -51,8 +52,19 @@ struct Scene {
   bool convexClosedSolid = false;
 
   size_t FaceCount() const { return facePlanesWorld.size(); }
-  /// The lines wire mode draws (SceneEdges.h), built from mesh on first use.
-  const std::vector<SceneEdge>& Edges() const { return edges_.Get(mesh); }
+  /// A face's corners (vertex indices), counter-clockwise seen from outside.
+  FaceCorners Face(size_t face) const {
+    if (!source.faces.corners.empty()) return source.faces.Face(face);
+    const auto& t = triangles[face].vertices;  // TriangulatePolygon's {2, 0, 1} of the corners
+    return FaceCorners(std::array<uint32_t, 3>{t[1], t[2], t[0]});
+  }
+  bool EdgeHidden(size_t face, size_t i) const { return source.faces.EdgeHidden(face, i); }
+  /// Vertex v as the file gives it.
+  Vec3 VertexFile(size_t v) const { return source.VertexFile(upAxis, verticesWorld, v); }
+  /// The model as read (closed parts outward), rebuilt: to prepare it again.
+  Mesh SourceMesh() const;
+  /// The lines wire mode draws (SceneEdges.h), built on first use.
+  const std::vector<SceneEdge>& Edges() const { return edges_.Get(*this); }
 
  private:
   LazySceneEdges edges_;

@@ -103,4 +103,14 @@ Vec3 ZUpFromFile(UpAxis axis, Vec3 pFile) {
           Signed(turn.sign[2], Component(pFile, turn.source[2]))};
 }
 
+Vec3 FileFromZUp(UpAxis axis, Vec3 pZUp) {
+  const Permutation turn = PermutationFor(axis);
+  std::array<double, 3> file{};
+  for (size_t i = 0; i < 3; ++i) {
+    file[static_cast<size_t>(turn.source[i])] =
+        Signed(turn.sign[i], Component(pZUp, static_cast<int>(i)));
+  }
+  return {file[0], file[1], file[2]};
+}
+
 }  // namespace termshade

@@ -25,5 +25,7 @@ Mat4 ZUpFromFile(UpAxis axis);
 
 /// The same turn applied to a point: components copied with their signs, so exact.
 Vec3 ZUpFromFile(UpAxis axis, Vec3 pFile);
+/// Its inverse, as exact.
+Vec3 FileFromZUp(UpAxis axis, Vec3 pZUp);
 
 }  // namespace termshade

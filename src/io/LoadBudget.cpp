@@ -31,7 +31,8 @@ class Tokens {
       }
     }
     const size_t start = pos_;
-    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])) == 0) ++pos_;
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])) == 0)
+      ++pos_;
     return text_.substr(start, pos_ - start);
   }
   // The rest of the current line, as one piece.
@@ -160,6 +161,41 @@ size_t EstimateImportBytes(std::string_view format, size_t fileBytes) {
   return static_cast<size_t>(std::min(kBaseBytes + perByte * static_cast<double>(fileBytes), 1e18));
 }
 
+std::optional<size_t> EstimateOwnReaderBytes(std::string_view format, size_t fileBytes) {
+  // Peak resident bytes per file byte of `termshade render` on the generated
+  // 2M-triangle spheres (/usr/bin/time), with a margin: the file is held
+  // while the mesh is read (OBJ 85 MB, STL 100 MB, PLY 38 MB of file).
+  double perByte = 0;
+  if (format == "stl") perByte = 3;
+  if (format == "obj") perByte = 3;
+  if (format == "ply") perByte = 6;
+  if (perByte == 0) return std::nullopt;
+  constexpr double kBaseBytes = 32.0 * (1 << 20);
+  return static_cast<size_t>(std::min(kBaseBytes + perByte * static_cast<double>(fileBytes), 1e18));
+}
+
+size_t EstimateLeastLoadBytes(size_t fileBytes) {
+  return std::min(EstimateImportBytes("dat", fileBytes), *EstimateOwnReaderBytes("stl", fileBytes));
+}
+
+size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces) {
+  const auto v = static_cast<double>(vertices), c = static_cast<double>(corners),
+             f = static_cast<double>(faces);
+  const double triangles = std::max(0.0, c - 2 * f);
+  // Faces other than one triangle each are kept: corners, hidden flags, starts.
+  const double keptFaces = c == 3 * f ? 0.0 : 5 * c + 4 * f;
+  // The first frame: world vertices and the renderer's per-vertex buffers
+  // (48 / vertex), triangles (16), planes, starts, per-face buffers and clusters (40 / face).
+  const double frame = 48 * v + 16 * triangles + 40 * f + keptFaces;
+  // Preparation at its peak: world vertices, corners, edge uses (8 / corner),
+  // their per-vertex starts, orientation's per-face arrays (14 / face).
+  const double prepare = 32 * v + 12 * c + 14 * f + keptFaces;
+  // Reading: the file and the mesh (vertices, corners with hidden flags, starts).
+  const double read = static_cast<double>(fileBytes) + 24 * v + 5 * c + 4 * f;
+  constexpr double kBaseBytes = 16.0 * (1 << 20);
+  return static_cast<size_t>(std::min(kBaseBytes + std::max({read, frame, prepare}), 1e18));
+}
+
 size_t EstimateMeshBytes(size_t vertices, size_t corners, size_t faces) {
   // Mesh: vertices, corners, hidden flags, face starts. Scene: world vertices,
   // triangles, face planes, edge sets while preparing.
@@ -169,8 +205,8 @@ size_t EstimateMeshBytes(size_t vertices, size_t corners, size_t faces) {
 }
 
 std::string OverBudgetMessage(double neededBytes, size_t budgetBytes) {
-  return "loading it needs about " + FormatBytes(neededBytes) + ", more than the memory budget of " +
-         FormatBytes(static_cast<double>(budgetBytes)) +
+  return "loading it needs about " + FormatBytes(neededBytes) +
+         ", more than the memory budget of " + FormatBytes(static_cast<double>(budgetBytes)) +
          " (raise it with --memory-budget or TERMSHADE_MEMORY_BUDGET)";
 }
 

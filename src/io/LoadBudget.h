@@ -16,8 +16,23 @@ std::optional<std::string> CheckHeaderCounts(std::string_view format, std::strin
 /// generated meshes and rounded up (the importer's own structures included).
 size_t EstimateImportBytes(std::string_view format, size_t fileBytes);
 
+/// Peak bytes our own reader (OBJ, binary STL, PLY: OwnReaders.h) takes for
+/// fileBytes of the format, through preparation and the first frame, for
+/// files like the generated spheres; ReadWithOwnReader's caller checks the
+/// real counts afterwards (EstimatePreparedBytes). nullopt for other formats.
+std::optional<size_t> EstimateOwnReaderBytes(std::string_view format, size_t fileBytes);
+
+/// The least any format's load of fileBytes takes: what a file must pass
+/// before it is read.
+size_t EstimateLeastLoadBytes(size_t fileBytes);
+
 /// Bytes a mesh of this size takes once loaded and prepared for rendering.
 size_t EstimateMeshBytes(size_t vertices, size_t corners, size_t faces);
+
+/// Peak bytes reading a mesh of this size from fileBytes of file (held
+/// while it is read), preparing it and drawing its first frame take
+/// (PrepareScene's arrays, the renderer's buffers).
+size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces);
 
 /// The message for a model that needs more memory than the budget allows.
 std::string OverBudgetMessage(double neededBytes, size_t budgetBytes);

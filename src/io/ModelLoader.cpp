@@ -60,18 +60,27 @@ Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const Mo
     if (auto problem = CheckHeaderCounts("off", bytes)) return fail(std::move(*problem));
   }
   if (auto problem = CheckHeaderCounts("ply", bytes)) return fail(std::move(*problem));
-  // Step 2: the import's memory against the budget.
-  const auto needed = static_cast<double>(EstimateImportBytes(format, bytes.size()));
-  if (needed > static_cast<double>(options.memoryBudgetBytes)) {
-    return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
-  }
-  // Step 3: a dedicated reader where one takes the file.
-  if (!options.importerOnly) {
+  const auto overBudget = [&](size_t needed) { return needed > options.memoryBudgetBytes; };
+  // Step 2: a dedicated reader where one takes the file, within its own
+  // estimate, then the mesh's real size (file still held) against the budget.
+  const auto ownNeeds = EstimateOwnReaderBytes(format, bytes.size());
+  if (!options.importerOnly && ownNeeds) {
+    if (overBudget(*ownNeeds)) return fail(OverBudgetMessage(*ownNeeds, options.memoryBudgetBytes));
     if (auto mesh =
             ReadWithOwnReader(bytes, format, place.displayName, options.memoryBudgetBytes)) {
+      if (!mesh->Ok()) return std::move(*mesh);
+      const Mesh& read = mesh->Value();
+      const size_t needed =
+          std::max(*ownNeeds, EstimatePreparedBytes(bytes.size(), read.verticesFile.size(),
+                                                    read.faceCorners.size(), read.FaceCount()));
+      if (overBudget(needed)) return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
       return std::move(*mesh);
     }
   }
+  // Step 3: the import's memory against the budget.
+  const size_t importNeeds = EstimateImportBytes(format, bytes.size());
+  if (overBudget(importNeeds))
+    return fail(OverBudgetMessage(importNeeds, options.memoryBudgetBytes));
   // Step 4: the import, under a name with the format's extension (Assimp picks
   // its importer by it; without one, it sniffs the content).
   ImportSource source;
@@ -148,7 +157,7 @@ Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
   }
   // A file: regular only, no larger than the budget lets the smallest import be.
   const auto refuseSize = [&](size_t size) -> std::optional<std::string> {
-    const auto needed = static_cast<double>(EstimateImportBytes("dat", size));
+    const auto needed = static_cast<double>(EstimateLeastLoadBytes(size));
     if (needed <= static_cast<double>(options.memoryBudgetBytes)) return std::nullopt;
     return "the file is " + FormatBytes(static_cast<double>(size)) + "; " +
            OverBudgetMessage(needed, options.memoryBudgetBytes);

@@ -18,7 +18,7 @@ LoadJob::LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis up
     : path_(std::move(path)), shared_(std::make_shared<Shared>()) {
   shared_->preparing.store(true);
   worker_ = StartWorkerThread([shared = shared_, scene = std::move(scene), upAxis] {
-    Mesh mesh = scene->mesh;  // the shown scene stays whole until the new one replaces it
+    Mesh mesh = scene->SourceMesh();  // the shown scene stays whole until the new one replaces it
     shared->result.emplace(PrepareScene(std::move(mesh), upAxis));
     Finish(*shared);
   });

@@ -387,7 +387,7 @@ class EventLoop {
     const RenderStats stats = renderer_.Render(*pick.scene, camera, frameOptions_, depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     ++framesDrawn_;
-    CellColourMap colours(pick.scene->mesh.faceColors, levelCount, state_.Colour());
+    CellColourMap colours(pick.scene->source.faceColors, levelCount, state_.Colour());
     painter_.PaintFrame(cells_, colours, grid_);
     // Step 2: overlays and the status line, then one write of what changed.
     if (state_.HelpShown()) painter_.PaintHelp(grid_);

@@ -120,7 +120,7 @@ void ViewerState::RunPendingLoad() {
   const std::optional<LoadRequest> request = TakeLoadRequest();
   if (!request) return;
   if (request->turnTo) {
-    FinishLoad(*request, PrepareScene(Mesh(scene_->mesh), *request->turnTo));
+    FinishLoad(*request, PrepareScene(scene_->SourceMesh(), *request->turnTo));
   } else {
     FinishLoad(*request, LoadViewerScene(request->path, {}, upAxis_));
   }

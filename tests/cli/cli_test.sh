@@ -182,6 +182,12 @@ check stdin_png 1 "-: not a model file (looks like PNG image)" -- bash -c "'$bin
 check memory_budget 1 "more than the memory budget of 1.0 KiB" -- "$bin" render "$src/data/cube.dat" --memory-budget 1K
 check memory_budget_from_environment 1 "more than the memory budget of 2.0 KiB" -- env TERMSHADE_MEMORY_BUDGET=2K "$bin" render "$src/data/cube.dat"
 check bad_memory_budget 2 "--memory-budget" -- "$bin" render "$src/data/cube.dat" --memory-budget lots
+# A small file whose mesh is large (one triangle a million times over): within
+# the reader's estimate per file byte, refused once its real counts are known.
+awk 'BEGIN { print "v 0 0 0\nv 1 0 0\nv 0 1 0"; for (i = 0; i < 1000000; ++i) print "f 1 2 3" }' >"$work/dense.obj"
+check dense_obj_over_budget 1 "dense.obj: loading it needs about" -- "$bin" render "$work/dense.obj" --memory-budget 60M
+expect dense_obj_over_budget_says_budget grep -q "more than the memory budget of 60.0 MiB" "$work/err"
+check dense_obj_within_budget 0 "" -- "$bin" render "$work/dense.obj" --memory-budget 256M --size 20x8
 cp "$src/data/cube.dat" "$work/model.dat"
 check output_onto_model 2 "is the model itself" -- "$bin" render "$work/model.dat" -o "$work/model.dat"
 expect output_onto_model_keeps_model cmp -s "$work/model.dat" "$src/data/cube.dat"

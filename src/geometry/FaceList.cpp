@@ -1,0 +1,28 @@
+#include "geometry/FaceList.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace termshade {
+
+FaceList TakeFaces(Mesh& mesh) {
+  FaceList faces;
+  faces.faceCount = mesh.FaceCount();
+  bool allTriangles = true;
+  for (size_t f = 0; f < faces.faceCount && allTriangles; ++f) {
+    allTriangles = mesh.faceStarts[f + 1] - mesh.faceStarts[f] == 3;
+  }
+  const bool anyHidden =
+      std::any_of(mesh.edgeHidden.begin(), mesh.edgeHidden.end(), [](uint8_t h) { return h != 0; });
+  faces.corners = std::move(mesh.faceCorners);
+  if (!allTriangles) faces.starts = std::move(mesh.faceStarts);
+  if (anyHidden) faces.hidden = std::move(mesh.edgeHidden);
+  mesh.faceCorners.clear();
+  mesh.faceStarts.assign(1, 0);
+  mesh.edgeHidden.clear();
+  mesh.faceStarts.shrink_to_fit();
+  mesh.edgeHidden.shrink_to_fit();
+  return faces;
+}
+
+}  // namespace termshade
