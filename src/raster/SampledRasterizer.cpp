@@ -1,0 +1,189 @@
+#include "raster/SampledRasterizer.h"
+
+#include <algorithm>
+#include <array>
+
+#include "raster/FixedPoint.h"
+
+namespace termshade {
+namespace {
+
+// Edge function of a -> b at the origin sample and its steps per sample, as
+// TriangleRasterizer.cpp's MakeEdge (positive inside a clockwise triangle,
+// biased by 1 on edges that are neither top nor left).
+struct Edge {
+  int64_t stepX = 0;
+  int64_t stepY = 0;
+  int64_t atOrigin = 0;
+};
+
+Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int64_t originY) {
+  const int64_t dx = int64_t{b.x} - a.x;
+  const int64_t dy = int64_t{b.y} - a.y;
+  const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
+  return {-dy * kFixedOne, dx * kFixedOne,
+          dx * (originY - a.y) - dy * (originX - a.x) - (topLeft ? 0 : 1)};
+}
+
+// Samples s (centers s * 256 + 128) in [low, high], clipped to [0, limit).
+void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
+  first = std::max(0, (low - kFixedHalf + kFixedOne - 1) >> kSubCellBits);
+  last = std::min(limit - 1, (high - kFixedHalf) >> kSubCellBits);
+}
+
+// An edge over one cell's samples: the offsets of each sample from the
+// cell's first, and the least and greatest of them (at the corners).
+template <int kCount, typename Lane>
+struct CellEdge {
+  std::array<Lane, kCount> offsets;
+  int64_t least, greatest;
+};
+
+template <int K, int M, typename Lane>
+CellEdge<K * M, Lane> MakeCellEdge(const Edge& e) {
+  CellEdge<K * M, Lane> c{};
+  for (int j = 0; j < M; ++j) {
+    for (int i = 0; i < K; ++i) c.offsets[j * K + i] = static_cast<Lane>(i * e.stepX + j * e.stepY);
+  }
+  c.least = std::min<int64_t>(0, (K - 1) * e.stepX) + std::min<int64_t>(0, (M - 1) * e.stepY);
+  c.greatest = std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
+  return c;
+}
+
+// Step 4 of RasterizeTriangle, a cell at a time. Lane: int32_t when every
+// edge value the triangle's cells reach fits, else int64_t.
+template <int K, int M, DepthRule kRule, typename Lane>
+void DrawCells(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+               int64_t area, uint32_t faceNumber, SampleFrame& frame, int cellCol0, int cellCol1,
+               int cellRow0, int cellRow1) {
+  constexpr int kCount = K * M;
+  const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
+  const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
+  const Edge e12 = MakeEdge(v1, v2, originX, originY);  // weight of v0
+  const Edge e20 = MakeEdge(v2, v0, originX, originY);  // weight of v1
+  const Edge e01 = MakeEdge(v0, v1, originX, originY);  // weight of v2
+  const auto c12 = MakeCellEdge<K, M, Lane>(e12);
+  const auto c20 = MakeCellEdge<K, M, Lane>(e20);
+  const auto c01 = MakeCellEdge<K, M, Lane>(e01);
+  // As DepthInterpolator<kFloatInverseZ>: the same float operations in the same order.
+  const float invArea = 1.0F / static_cast<float>(area);
+  const float k0 = v0.w * invArea, k1 = v1.w * invArea, k2 = v2.w * invArea;
+  uint32_t* const faces = frame.FaceData();
+  float* const depth = frame.DepthData();
+  const size_t width = static_cast<size_t>(frame.WidthCells());
+  int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
+  for (int row = cellRow0; row <= cellRow1; ++row) {
+    int64_t b12 = row12, b20 = row20, b01 = row01;
+    size_t cell = row * width + cellCol0;
+    for (int col = cellCol0; col <= cellCol1;
+         ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
+      // Step 1: the corners decide cells wholly outside one edge (and wholly inside all).
+      if (b12 + c12.greatest < 0 || b20 + c20.greatest < 0 || b01 + c01.greatest < 0) continue;
+      const bool inside = b12 + c12.least >= 0 && b20 + c20.least >= 0 && b01 + c01.least >= 0;
+      const auto l12 = static_cast<Lane>(b12), l20 = static_cast<Lane>(b20),
+                 l01 = static_cast<Lane>(b01);
+      uint32_t covered = 0;
+      if (inside) {
+        covered = (1U << kCount) - 1;
+      } else {
+        for (int n = 0; n < kCount; ++n) {
+          const Lane w12 = l12 + c12.offsets[n], w20 = l20 + c20.offsets[n],
+                     w01 = l01 + c01.offsets[n];
+          covered |= static_cast<uint32_t>((w12 | w20 | w01) >= 0) << n;
+        }
+        if (covered == 0) continue;
+      }
+      // Step 2: the covered samples, by the rule.
+      frame.Touch(cell);
+      uint32_t* const cellFaces = faces + cell * kCount;
+      float* const cellDepth = depth + cell * kCount;
+      for (int n = 0; n < kCount; ++n) {
+        if (((covered >> n) & 1U) == 0) continue;
+        if constexpr (kRule == DepthRule::kCoverOnly) {
+          cellFaces[n] = faceNumber;
+        } else {
+          const Lane w12 = l12 + c12.offsets[n], w20 = l20 + c20.offsets[n],
+                     w01 = l01 + c01.offsets[n];
+          const float w = static_cast<float>(w12) * k0 + static_cast<float>(w20) * k1 +
+                          static_cast<float>(w01) * k2;
+          float& stored = cellDepth[n];
+          const bool wins = kRule == DepthRule::kOverwrite || w > stored ||
+                            (w == stored && faceNumber < cellFaces[n]);
+          if (wins) {
+            stored = w;
+            cellFaces[n] = faceNumber;
+          }
+        }
+      }
+    }
+    row12 += M * e12.stepY;
+    row20 += M * e20.stepY;
+    row01 += M * e01.stepY;
+  }
+}
+
+template <int K, int M, DepthRule kRule>
+void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                  uint32_t faceNumber, SampleFrame& frame) {
+  // Step 1: the samples the bounding box holds, as RasterizeTriangle finds them.
+  const int32_t minX = std::min({a.x, b.x, c.x}), maxX = std::max({a.x, b.x, c.x});
+  int col0 = 0, col1 = 0, row0 = 0, row1 = 0;
+  SampleRange(minX, maxX, frame.WidthCells() * K, col0, col1);
+  if (col0 > col1) return;
+  const int32_t minY = std::min({a.y, b.y, c.y}), maxY = std::max({a.y, b.y, c.y});
+  SampleRange(minY, maxY, frame.HeightCells() * M, row0, row1);
+  if (row0 > row1) return;
+  // Step 2: orient clockwise on screen; drop empty triangles.
+  const RasterVertex* v0 = &a;
+  const RasterVertex* v1 = &b;
+  const RasterVertex* v2 = &c;
+  int64_t area = (int64_t{v1->x} - v0->x) * (int64_t{v2->y} - v0->y) -
+                 (int64_t{v1->y} - v0->y) * (int64_t{v2->x} - v0->x);
+  if (area == 0) return;
+  if (area < 0) {
+    std::swap(v1, v2);
+    area = -area;
+  }
+  // Step 3: 32-bit lanes when |edge| <= 2 extent (extent + a cell) + 1 < 2^31
+  // for every sample of the cells the box touches.
+  const int64_t extent = std::max(int64_t{maxX} - minX, int64_t{maxY} - minY);
+  const int64_t reach = extent + int64_t{std::max(K, M)} * kFixedOne;
+  const int cellCol0 = col0 / K, cellCol1 = col1 / K, cellRow0 = row0 / M, cellRow1 = row1 / M;
+  if (2 * extent * reach + 1 < (int64_t{1} << 31) - 1) {
+    DrawCells<K, M, kRule, int32_t>(*v0, *v1, *v2, area, faceNumber, frame, cellCol0, cellCol1,
+                                    cellRow0, cellRow1);
+  } else {
+    DrawCells<K, M, kRule, int64_t>(*v0, *v1, *v2, area, faceNumber, frame, cellCol0, cellCol1,
+                                    cellRow0, cellRow1);
+  }
+}
+
+template <int K, int M>
+SampledRasterizer::DrawFunction ForRule(DepthRule rule) {
+  switch (rule) {
+    case DepthRule::kCoverOnly:
+      return DrawTriangle<K, M, DepthRule::kCoverOnly>;
+    case DepthRule::kOverwrite:
+      return DrawTriangle<K, M, DepthRule::kOverwrite>;
+    case DepthRule::kNearestWins:
+      break;
+  }
+  return DrawTriangle<K, M, DepthRule::kNearestWins>;
+}
+
+}  // namespace
+
+bool SampledRasterizer::Supports(SampleGrid grid) {
+  return grid == SampleGrid{1, 2} || grid == SampleGrid{2, 2} || grid == SampleGrid{2, 3} ||
+         grid == SampleGrid{2, 4};
+}
+
+SampledRasterizer::SampledRasterizer(SampleFrame& frame, DepthRule rule) : frame_(frame) {
+  const SampleGrid g = frame.Grid();
+  if (g == SampleGrid{1, 2}) draw_ = ForRule<1, 2>(rule);
+  if (g == SampleGrid{2, 2}) draw_ = ForRule<2, 2>(rule);
+  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3>(rule);
+  if (g == SampleGrid{2, 4}) draw_ = ForRule<2, 4>(rule);
+}
+
+}  // namespace termshade
