@@ -10,8 +10,9 @@ void SampleFrame::Begin(int widthCells, int heightCells, SampleGrid grid) {
   grid_ = grid;
   perCell_ = static_cast<size_t>(grid.Count());
   const size_t cells = static_cast<size_t>(widthCells_) * heightCells_;
-  faces_.resize(cells * perCell_);
-  depth_.resize(cells * perCell_);
+  // Padding: the sampled rasterizer reads and writes back whole vectors of lanes.
+  faces_.resize(cells * perCell_ + kPaddingSamples);
+  depth_.resize(cells * perCell_ + kPaddingSamples);
   touched_.assign(cells, 0);
 }
 

@@ -17,6 +17,8 @@ namespace termshade {
 /// and are neither cleared nor read (a frame clears only the flags).
 class SampleFrame {
  public:
+  /// Samples past the last cell that may be read and written back unchanged.
+  static constexpr size_t kPaddingSamples = 8;
   /// Sizes the frame (keeping capacity) and marks every cell untouched.
   void Begin(int widthCells, int heightCells, SampleGrid grid);
 
