@@ -34,6 +34,18 @@ bool DrawsByCluster(const Scene& scene, const RenderOptions& options) {
          ClusterStage::Usable(scene);
 }
 
+// Adds a face not seen before to `seen`, marking its level 0 (EndSeenFaces
+// restores -1); runs of one face look it up once.
+inline void MarkSeen(uint32_t faceNumber, uint32_t& previous, std::vector<int16_t>& levels,
+                     std::vector<uint32_t>& seen) {
+  if (faceNumber == previous) return;
+  previous = faceNumber;
+  if (faceNumber != 0 && levels[faceNumber - 1] == -1) {
+    levels[faceNumber - 1] = 0;
+    seen.push_back(faceNumber - 1);
+  }
+}
+
 RenderOptions ResolvedOptions(const Scene& scene, const RenderOptions& options) {
   RenderOptions resolved = options;
   resolved.method = ResolvedMethod(scene, options.method);
@@ -160,8 +172,12 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   RenderStats stats;
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
   BeginSeenFaces(scene);
+  uint32_t previous = 0;
   for (size_t cell = 0; cell < sampleFrame_.CellCount(); ++cell) {
-    if (sampleFrame_.Touched(cell)) MarkSeenFaces(sampleFrame_.Faces(cell));
+    if (!sampleFrame_.Touched(cell)) continue;
+    for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
+      MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
+    }
   }
   ShadeSeenFaces(scene, single);
   stats.facesVisible = EndSeenFaces();
@@ -339,15 +355,8 @@ void Renderer::BeginSeenFaces(const Scene& scene) {
 
 // Adds the faces of these samples or cells not seen before to seenFaces_.
 void Renderer::MarkSeenFaces(std::span<const uint32_t> faceNumbers) {
-  uint32_t previous = 0;  // runs of one face look it up once
-  for (uint32_t faceNumber : faceNumbers) {
-    if (faceNumber == previous) continue;
-    previous = faceNumber;
-    if (faceNumber != 0 && faceLevels_[faceNumber - 1] == -1) {
-      faceLevels_[faceNumber - 1] = 0;  // marked; restored to -1 by EndSeenFaces
-      seenFaces_.push_back(faceNumber - 1);
-    }
-  }
+  uint32_t previous = 0;
+  for (uint32_t faceNumber : faceNumbers) MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
 }
 
 // The level and intensity of every seen face.

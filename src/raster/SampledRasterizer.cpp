@@ -29,6 +29,11 @@ Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int
           dx * (originY - a.y) - dy * (originX - a.x) - (topLeft ? 0 : 1)};
 }
 
+// Boxes of at most this many samples are drawn sample by sample (measured:
+// 32 and cell by cell for bigger boxes is about 5% quicker on sphere_cone
+// than either alone).
+constexpr int kSmallBox = 32;
+
 // Samples s (centers s * 256 + 128) in [low, high], clipped to [0, limit).
 void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
   first = std::max(0, (low - kFixedHalf + kFixedOne - 1) >> kSubCellBits);
@@ -229,6 +234,58 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   }
 }
 
+// RasterizeTriangle's step 4 sample by sample over the box, each sample
+// written at its place in the cell-major frame: small triangles, whose box
+// holds few samples.
+template <int K, int M, DepthRule kRule>
+void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+                 int64_t area, uint32_t faceNumber, SampleFrame& frame, int col0, int col1,
+                 int row0, int row1) {
+  constexpr int kCount = K * M;
+  const int64_t originX = int64_t{col0} * kFixedOne + kFixedHalf;
+  const int64_t originY = int64_t{row0} * kFixedOne + kFixedHalf;
+  const Edge e12 = MakeEdge(v1, v2, originX, originY);  // weight of v0
+  const Edge e20 = MakeEdge(v2, v0, originX, originY);  // weight of v1
+  const Edge e01 = MakeEdge(v0, v1, originX, originY);  // weight of v2
+  const float invArea = 1.0F / static_cast<float>(area);
+  const float k0 = v0.w * invArea, k1 = v1.w * invArea, k2 = v2.w * invArea;
+  uint32_t* const faces = frame.FaceData();
+  float* const depth = frame.DepthData();
+  const size_t width = static_cast<size_t>(frame.WidthCells());
+  int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
+  for (int row = row0; row <= row1; ++row) {
+    int64_t w12 = row12, w20 = row20, w01 = row01;
+    const size_t rowCells = static_cast<size_t>(row / M) * width;
+    const int laneRow = (row % M) * K;
+    for (int col = col0; col <= col1; ++col) {
+      if ((w12 | w20 | w01) >= 0) {
+        const size_t cell = rowCells + static_cast<size_t>(col / K);
+        const size_t index = cell * kCount + laneRow + col % K;
+        frame.Touch(cell);
+        if constexpr (kRule == DepthRule::kCoverOnly) {
+          faces[index] = faceNumber;
+        } else {
+          const float w = static_cast<float>(w12) * k0 + static_cast<float>(w20) * k1 +
+                          static_cast<float>(w01) * k2;
+          float& stored = depth[index];
+          const bool wins = kRule == DepthRule::kOverwrite || w > stored ||
+                            (w == stored && faceNumber < faces[index]);
+          if (wins) {
+            stored = w;
+            faces[index] = faceNumber;
+          }
+        }
+      }
+      w12 += e12.stepX;
+      w20 += e20.stepX;
+      w01 += e01.stepX;
+    }
+    row12 += e12.stepY;
+    row20 += e20.stepY;
+    row01 += e01.stepY;
+  }
+}
+
 template <int K, int M, DepthRule kRule>
 void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                   uint32_t faceNumber, SampleFrame& frame) {
@@ -256,7 +313,13 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   const int64_t extent = std::max(int64_t{maxX} - minX, int64_t{maxY} - minY);
   const int64_t reach = extent + int64_t{std::max(K, M)} * kFixedOne;
   const int cellCol0 = col0 / K, cellCol1 = col1 / K, cellRow0 = row0 / M, cellRow1 = row1 / M;
-  if (2 * extent * reach + 1 < (int64_t{1} << 31) - 1) {
+  const bool fits32 = 2 * extent * reach + 1 < (int64_t{1} << 31) - 1;
+  if ((col1 - col0 + 1) * (row1 - row0 + 1) <= kSmallBox) {
+    DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
+  } else if (fits32 && K * M <= 2) {  // half a vector: plain lanes are quicker
+    DrawCells<K, M, kRule, int32_t>(*v0, *v1, *v2, area, faceNumber, frame, cellCol0, cellCol1,
+                                    cellRow0, cellRow1);
+  } else if (fits32) {
     DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, cellCol0, cellCol1,
                                  cellRow0, cellRow1);
   } else {
