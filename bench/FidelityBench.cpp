@@ -162,7 +162,8 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
   const int cols = options.widthCells, rows = options.heightCells;
   std::ofstream csv;
   if (!options.timingOnly) csv.open(options.csvPath);
-  if (!options.timingOnly) csv << "scene,mode,median_ms,time_vs_ramp,ssim,mse,ssim_unifont,flicker\n";
+  if (!options.timingOnly)
+    csv << "scene,mode,median_ms,time_vs_ramp,ssim,mse,ssim_unifont,flicker\n";
   std::printf(
       "termshade bench fidelity: %dx%d cells, %d views per scene, blurred SSIM and MSE "
       "against the exact 8x16-per-cell image, %s\n",

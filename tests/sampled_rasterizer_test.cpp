@@ -70,11 +70,10 @@ void CompareOn(const Scene& scene, const std::string& name, int cols, int rows, 
           options.keepDepth = (flags & 2) != 0;
           options.shade = v == 2 ? ShadeMode::kLambert : ShadeMode::kContrast;
           if (options.glyphs == GlyphMode::kRamp) options.variant.samples = {2, 4};
-          const std::string what = name + " view " + std::to_string(v) + " " +
-                                   std::string(MethodName(method)) + " " +
-                                   std::string(GlyphModeName(options.glyphs)) + " flags " +
-                                   std::to_string(flags) + " " + std::to_string(cols) + "x" +
-                                   std::to_string(rows);
+          const std::string what =
+              name + " view " + std::to_string(v) + " " + std::string(MethodName(method)) + " " +
+              std::string(GlyphModeName(options.glyphs)) + " flags " + std::to_string(flags) + " " +
+              std::to_string(cols) + "x" + std::to_string(rows);
           ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows),
                      Draw(referenceRenderer, scene, camera, options, false, cols, rows),
                      options.keepDepth, what);

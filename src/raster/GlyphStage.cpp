@@ -201,47 +201,47 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
       fine.covered |= face != 0 ? SamplePattern{1} << n : 0;
       if (in.writeDepth) nearest = std::max(nearest, in.frame.Depths(index)[n]);
     }
-      if (reduce) ReduceToParts(fine, grid, in.pattern, parts);
-      const CellSamples& s = reduce ? parts : fine;
-      // Step 2: the glyph and its colours.
-      SamplePattern ink = s.covered;
-      Tone fore, back;
-      char32_t glyph = U' ';
-      switch (mode) {
-        case GlyphMode::kRamp: {
-          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
-          glyph = options.ramp.Glyph(levelOf[fore.intensity]);
-          break;
-        }
-        case GlyphMode::kAscii: {
-          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-          glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
-                                    : ascii_.MatchInk(s.values.data(), s.covered);
-          break;
-        }
-        case GlyphMode::kBraille:
-          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-          glyph = PatternGlyph(mode, s.covered);
-          break;
-        default:          // blocks, quadrants, sextants
-          if (oneFace) {  // one tone: a full block
-            ink = all;
-            fore = {firstFace, s.values[0]};
-          } else {
-            if (options.twoColour) ink = BrighterHalf(s);
-            if (ink == 0) ink = all;
-            fore = ToneOf(s, ink);
-            if (options.twoColour) back = ToneOf(s, all & ~ink);
-          }
-          glyph = PatternGlyph(mode, ink);
-          break;
+    if (reduce) ReduceToParts(fine, grid, in.pattern, parts);
+    const CellSamples& s = reduce ? parts : fine;
+    // Step 2: the glyph and its colours.
+    SamplePattern ink = s.covered;
+    Tone fore, back;
+    char32_t glyph = U' ';
+    switch (mode) {
+      case GlyphMode::kRamp: {
+        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
+        glyph = options.ramp.Glyph(levelOf[fore.intensity]);
+        break;
       }
-      cells.Glyphs()[index] = glyph;
-      SetTone(fore, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
-              cells.Intensities()[index]);
-      SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
-              cells.BackIntensities()[index]);
-      if (in.writeDepth) depth.At(index) = nearest;
+      case GlyphMode::kAscii: {
+        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
+        glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
+                                  : ascii_.MatchInk(s.values.data(), s.covered);
+        break;
+      }
+      case GlyphMode::kBraille:
+        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
+        glyph = PatternGlyph(mode, s.covered);
+        break;
+      default:          // blocks, quadrants, sextants
+        if (oneFace) {  // one tone: a full block
+          ink = all;
+          fore = {firstFace, s.values[0]};
+        } else {
+          if (options.twoColour) ink = BrighterHalf(s);
+          if (ink == 0) ink = all;
+          fore = ToneOf(s, ink);
+          if (options.twoColour) back = ToneOf(s, all & ~ink);
+        }
+        glyph = PatternGlyph(mode, ink);
+        break;
+    }
+    cells.Glyphs()[index] = glyph;
+    SetTone(fore, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
+            cells.Intensities()[index]);
+    SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
+            cells.BackIntensities()[index]);
+    if (in.writeDepth) depth.At(index) = nearest;
   }
 }
 

@@ -156,8 +156,9 @@ RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
     sampleFrame_.CopyFrom(fineCells_, depthKept ? &fineDepth_ : nullptr);
     fineCellsCurrent_ = true;
   }
-  glyphStage_.Compose({sampleFrame_, faceIntensities_, PatternSampleGrid(options), options.keepDepth},
-                      options, cells, depth);
+  glyphStage_.Compose(
+      {sampleFrame_, faceIntensities_, PatternSampleGrid(options), options.keepDepth}, options,
+      cells, depth);
   return stats;
 }
 

@@ -62,9 +62,9 @@ CellEdge<K * M, Lane> MakeCellEdge(const Edge& e) {
 // Step 4 of RasterizeTriangle, a cell at a time. Lane: int32_t when every
 // edge value the triangle's cells reach fits, else int64_t.
 template <int K, int M, DepthRule kRule, typename Lane>
-void DrawCells(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
-               int64_t area, uint32_t faceNumber, SampleFrame& frame, int cellCol0, int cellCol1,
-               int cellRow0, int cellRow1) {
+void DrawCells(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2, int64_t area,
+               uint32_t faceNumber, SampleFrame& frame, int cellCol0, int cellCol1, int cellRow0,
+               int cellRow1) {
   constexpr int kCount = K * M;
   const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
   const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
@@ -172,8 +172,7 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
     return std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
   };
   const int64_t least12 = least(e12), least20 = least(e20), least01 = least(e01);
-  const int64_t greatest12 = greatest(e12), greatest20 = greatest(e20),
-                greatest01 = greatest(e01);
+  const int64_t greatest12 = greatest(e12), greatest20 = greatest(e20), greatest01 = greatest(e01);
   // As DepthInterpolator<kFloatInverseZ>: the same float operations in the same order.
   const float invArea = 1.0F / static_cast<float>(area);
   const float k0 = v0.w * invArea, k1 = v1.w * invArea, k2 = v2.w * invArea;
