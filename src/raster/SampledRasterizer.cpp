@@ -1,7 +1,6 @@
 #include "raster/SampledRasterizer.h"
 
 #include <algorithm>
-#include <array>
 #include <cstring>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -40,95 +39,47 @@ void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
   last = std::min(limit - 1, (high - kFixedHalf) >> kSubCellBits);
 }
 
-// An edge over one cell's samples: the offsets of each sample from the
-// cell's first, and the least and greatest of them (at the corners).
-template <int kCount, typename Lane>
-struct CellEdge {
-  std::array<Lane, kCount> offsets;
-  int64_t least, greatest;
+// A triangle's edges from an origin sample and its depth weights, as
+// RasterizeTriangle sets them up (v0, v1, v2 clockwise, area > 0).
+struct Setup {
+  Edge e12, e20, e01;  // weights of v0, v1, v2
+  float k0, k1, k2;    // as DepthInterpolator<kFloatInverseZ>
 };
 
-template <int K, int M, typename Lane>
-CellEdge<K * M, Lane> MakeCellEdge(const Edge& e) {
-  CellEdge<K * M, Lane> c{};
-  for (int j = 0; j < M; ++j) {
-    for (int i = 0; i < K; ++i) c.offsets[j * K + i] = static_cast<Lane>(i * e.stepX + j * e.stepY);
-  }
-  c.least = std::min<int64_t>(0, (K - 1) * e.stepX) + std::min<int64_t>(0, (M - 1) * e.stepY);
-  c.greatest = std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
-  return c;
+Setup MakeSetup(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+                int64_t area, int64_t originX, int64_t originY) {
+  const float invArea = 1.0F / static_cast<float>(area);
+  return {MakeEdge(v1, v2, originX, originY),
+          MakeEdge(v2, v0, originX, originY),
+          MakeEdge(v0, v1, originX, originY),
+          v0.w * invArea,
+          v1.w * invArea,
+          v2.w * invArea};
 }
 
-// Step 4 of RasterizeTriangle, a cell at a time. Lane: int32_t when every
-// edge value the triangle's cells reach fits, else int64_t.
-template <int K, int M, DepthRule kRule, typename Lane>
-void DrawCells(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2, int64_t area,
-               uint32_t faceNumber, SampleFrame& frame, int cellCol0, int cellCol1, int cellRow0,
-               int cellRow1) {
-  constexpr int kCount = K * M;
-  const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
-  const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
-  const Edge e12 = MakeEdge(v1, v2, originX, originY);  // weight of v0
-  const Edge e20 = MakeEdge(v2, v0, originX, originY);  // weight of v1
-  const Edge e01 = MakeEdge(v0, v1, originX, originY);  // weight of v2
-  const auto c12 = MakeCellEdge<K, M, Lane>(e12);
-  const auto c20 = MakeCellEdge<K, M, Lane>(e20);
-  const auto c01 = MakeCellEdge<K, M, Lane>(e01);
-  // As DepthInterpolator<kFloatInverseZ>: the same float operations in the same order.
-  const float invArea = 1.0F / static_cast<float>(area);
-  const float k0 = v0.w * invArea, k1 = v1.w * invArea, k2 = v2.w * invArea;
-  uint32_t* const faces = frame.FaceData();
-  float* const depth = frame.DepthData();
-  const size_t width = static_cast<size_t>(frame.WidthCells());
-  int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
-  for (int row = cellRow0; row <= cellRow1; ++row) {
-    int64_t b12 = row12, b20 = row20, b01 = row01;
-    size_t cell = row * width + cellCol0;
-    for (int col = cellCol0; col <= cellCol1;
-         ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
-      // Step 1: the corners decide cells wholly outside one edge (and wholly inside all).
-      if (b12 + c12.greatest < 0 || b20 + c20.greatest < 0 || b01 + c01.greatest < 0) continue;
-      const bool inside = b12 + c12.least >= 0 && b20 + c20.least >= 0 && b01 + c01.least >= 0;
-      const auto l12 = static_cast<Lane>(b12), l20 = static_cast<Lane>(b20),
-                 l01 = static_cast<Lane>(b01);
-      uint32_t covered = 0;
-      if (inside) {
-        covered = (1U << kCount) - 1;
-      } else {
-        for (int n = 0; n < kCount; ++n) {
-          const Lane w12 = l12 + c12.offsets[n], w20 = l20 + c20.offsets[n],
-                     w01 = l01 + c01.offsets[n];
-          covered |= static_cast<uint32_t>((w12 | w20 | w01) >= 0) << n;
-        }
-        if (covered == 0) continue;
-      }
-      // Step 2: the covered samples, by the rule.
-      frame.Touch(cell);
-      uint32_t* const cellFaces = faces + cell * kCount;
-      float* const cellDepth = depth + cell * kCount;
-      for (int n = 0; n < kCount; ++n) {
-        if (((covered >> n) & 1U) == 0) continue;
-        if constexpr (kRule == DepthRule::kCoverOnly) {
-          cellFaces[n] = faceNumber;
-        } else {
-          const Lane w12 = l12 + c12.offsets[n], w20 = l20 + c20.offsets[n],
-                     w01 = l01 + c01.offsets[n];
-          const float w = static_cast<float>(w12) * k0 + static_cast<float>(w20) * k1 +
-                          static_cast<float>(w01) * k2;
-          float& stored = cellDepth[n];
-          const bool wins = kRule == DepthRule::kOverwrite || w > stored ||
-                            (w == stored && faceNumber < cellFaces[n]);
-          if (wins) {
-            stored = w;
-            cellFaces[n] = faceNumber;
-          }
-        }
-      }
+// One covered sample by the rule: the same float operations in the same order
+// as RasterizeTriangle.
+template <DepthRule kRule, typename Lane>
+void StoreSample(const Setup& t, Lane w12, Lane w20, Lane w01, uint32_t faceNumber, uint32_t& face,
+                 float& stored) {
+  if constexpr (kRule == DepthRule::kCoverOnly) {
+    face = faceNumber;
+  } else {
+    const float w = static_cast<float>(w12) * t.k0 + static_cast<float>(w20) * t.k1 +
+                    static_cast<float>(w01) * t.k2;
+    if (kRule == DepthRule::kOverwrite || w > stored || (w == stored && faceNumber < face)) {
+      stored = w;
+      face = faceNumber;
     }
-    row12 += M * e12.stepY;
-    row20 += M * e20.stepY;
-    row01 += M * e01.stepY;
   }
+}
+
+// The least and greatest offset of an edge's value over a cell's k x m
+// samples from its first (at the corners).
+template <int K, int M>
+void CornerRange(const Edge& e, int64_t& least, int64_t& greatest) {
+  least = std::min<int64_t>(0, (K - 1) * e.stepX) + std::min<int64_t>(0, (M - 1) * e.stepY);
+  greatest = std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
 }
 
 // Four lanes (GCC vector extensions; SSE2 registers on x86-64): a cell's
@@ -154,9 +105,8 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   constexpr int kVectors = (kCount + 3) / 4;
   const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
   const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
-  const Edge e12 = MakeEdge(v1, v2, originX, originY);  // weight of v0
-  const Edge e20 = MakeEdge(v2, v0, originX, originY);  // weight of v1
-  const Edge e01 = MakeEdge(v0, v1, originX, originY);  // weight of v2
+  const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
+  const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
   Int4 o12[kVectors]{}, o20[kVectors]{}, o01[kVectors]{}, valid[kVectors]{};
   for (int n = 0; n < kCount; ++n) {
     const int i = n % K, j = n / K;
@@ -165,17 +115,10 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
     o01[n / 4][n % 4] = static_cast<int32_t>(i * e01.stepX + j * e01.stepY);
     valid[n / 4][n % 4] = -1;
   }
-  auto least = [](const Edge& e) {
-    return std::min<int64_t>(0, (K - 1) * e.stepX) + std::min<int64_t>(0, (M - 1) * e.stepY);
-  };
-  auto greatest = [](const Edge& e) {
-    return std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
-  };
-  const int64_t least12 = least(e12), least20 = least(e20), least01 = least(e01);
-  const int64_t greatest12 = greatest(e12), greatest20 = greatest(e20), greatest01 = greatest(e01);
-  // As DepthInterpolator<kFloatInverseZ>: the same float operations in the same order.
-  const float invArea = 1.0F / static_cast<float>(area);
-  const float k0 = v0.w * invArea, k1 = v1.w * invArea, k2 = v2.w * invArea;
+  int64_t least12 = 0, least20 = 0, least01 = 0, greatest12 = 0, greatest20 = 0, greatest01 = 0;
+  CornerRange<K, M>(e12, least12, greatest12);
+  CornerRange<K, M>(e20, least20, greatest20);
+  CornerRange<K, M>(e01, least01, greatest01);
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
@@ -213,9 +156,9 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
           float* const laneDepth = depth + cell * kCount + 4 * h;
           Float4 stored;
           std::memcpy(&stored, laneDepth, sizeof stored);
-          const Float4 w = __builtin_convertvector(l12 + o12[h], Float4) * k0 +
-                           __builtin_convertvector(l20 + o20[h], Float4) * k1 +
-                           __builtin_convertvector(l01 + o01[h], Float4) * k2;
+          const Float4 w = __builtin_convertvector(l12 + o12[h], Float4) * t.k0 +
+                           __builtin_convertvector(l20 + o20[h], Float4) * t.k1 +
+                           __builtin_convertvector(l01 + o01[h], Float4) * t.k2;
           Int4 wins = covered[h];
           if constexpr (kRule == DepthRule::kNearestWins) {
             wins &= (w > stored) | ((w == stored) & (face < storedFaces));
@@ -243,11 +186,8 @@ void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVer
   constexpr int kCount = K * M;
   const int64_t originX = int64_t{col0} * kFixedOne + kFixedHalf;
   const int64_t originY = int64_t{row0} * kFixedOne + kFixedHalf;
-  const Edge e12 = MakeEdge(v1, v2, originX, originY);  // weight of v0
-  const Edge e20 = MakeEdge(v2, v0, originX, originY);  // weight of v1
-  const Edge e01 = MakeEdge(v0, v1, originX, originY);  // weight of v2
-  const float invArea = 1.0F / static_cast<float>(area);
-  const float k0 = v0.w * invArea, k1 = v1.w * invArea, k2 = v2.w * invArea;
+  const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
+  const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
   const size_t width = static_cast<size_t>(frame.WidthCells());
@@ -261,19 +201,7 @@ void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVer
         const size_t cell = rowCells + static_cast<size_t>(col / K);
         const size_t index = cell * kCount + laneRow + col % K;
         frame.Touch(cell);
-        if constexpr (kRule == DepthRule::kCoverOnly) {
-          faces[index] = faceNumber;
-        } else {
-          const float w = static_cast<float>(w12) * k0 + static_cast<float>(w20) * k1 +
-                          static_cast<float>(w01) * k2;
-          float& stored = depth[index];
-          const bool wins = kRule == DepthRule::kOverwrite || w > stored ||
-                            (w == stored && faceNumber < faces[index]);
-          if (wins) {
-            stored = w;
-            faces[index] = faceNumber;
-          }
-        }
+        StoreSample<kRule>(t, w12, w20, w01, faceNumber, faces[index], depth[index]);
       }
       w12 += e12.stepX;
       w20 += e20.stepX;
@@ -311,19 +239,14 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   // for every sample of the cells the box touches.
   const int64_t extent = std::max(int64_t{maxX} - minX, int64_t{maxY} - minY);
   const int64_t reach = extent + int64_t{std::max(K, M)} * kFixedOne;
-  const int cellCol0 = col0 / K, cellCol1 = col1 / K, cellRow0 = row0 / M, cellRow1 = row1 / M;
+  // Small boxes and 1x2 cells sample by sample; the rest cell by cell where
+  // 32 bits hold every edge value, else (huge triangles) sample by sample.
   const bool fits32 = 2 * extent * reach + 1 < (int64_t{1} << 31) - 1;
-  if ((col1 - col0 + 1) * (row1 - row0 + 1) <= kSmallBox) {
+  if ((col1 - col0 + 1) * (row1 - row0 + 1) <= kSmallBox || K * M <= 2 || !fits32) {
     DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
-  } else if (fits32 && K * M <= 2) {  // half a vector: plain lanes are quicker
-    DrawCells<K, M, kRule, int32_t>(*v0, *v1, *v2, area, faceNumber, frame, cellCol0, cellCol1,
-                                    cellRow0, cellRow1);
-  } else if (fits32) {
-    DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, cellCol0, cellCol1,
-                                 cellRow0, cellRow1);
   } else {
-    DrawCells<K, M, kRule, int64_t>(*v0, *v1, *v2, area, faceNumber, frame, cellCol0, cellCol1,
-                                    cellRow0, cellRow1);
+    DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
+                                 row0 / M, row1 / M);
   }
 }
 
