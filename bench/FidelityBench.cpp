@@ -96,23 +96,42 @@ RenderOptions OptionsFor(const ModeCase& c) {
   return options;
 }
 
-double MedianFrameMs(const NamedScene& named, const RenderOptions& options,
-                     const std::vector<Camera>& cameras, const FidelityBenchOptions& bench) {
-  Renderer renderer;
-  CellBuffer cells(bench.widthCells, bench.heightCells);
-  DepthBuffer depth;
-  depth.Resize(bench.widthCells, bench.heightCells);
-  for (const Camera& camera : cameras) renderer.Render(named.scene, camera, options, depth, cells);
-  std::vector<double> ms;
-  const auto deadline = Clock::now() + std::chrono::duration<double>(bench.secondsPerCase);
-  while (ms.size() < 10 || (Clock::now() < deadline && ms.size() < 20000)) {
-    for (const Camera& camera : cameras) {
-      const auto start = Clock::now();
-      renderer.Render(named.scene, camera, options, depth, cells);
-      ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+// Median frame time of every case in ms, the cases interleaved (one frame of
+// each in turn) so that load from other processes falls on all of them alike.
+std::vector<double> MedianFrameMs(const NamedScene& named, const std::vector<ModeCase>& cases,
+                                  const std::vector<Camera>& cameras,
+                                  const FidelityBenchOptions& bench) {
+  struct Timed {
+    Renderer renderer;
+    CellBuffer cells;
+    DepthBuffer depth;
+    std::vector<double> ms;
+  };
+  std::vector<Timed> timed(cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) {
+    timed[i].cells.Resize(bench.widthCells, bench.heightCells);
+    timed[i].depth.Resize(bench.widthCells, bench.heightCells);
+    for (const Camera& camera : cameras) {  // warm-up: scratch arrays, caches
+      timed[i].renderer.Render(named.scene, camera, OptionsFor(cases[i]), timed[i].depth,
+                               timed[i].cells);
     }
   }
-  return Median(std::move(ms));
+  const auto deadline =
+      Clock::now() + std::chrono::duration<double>(bench.secondsPerCase * cases.size());
+  for (int round = 0; round < 10 || (Clock::now() < deadline && round < 20000); ++round) {
+    for (const Camera& camera : cameras) {
+      for (size_t i = 0; i < cases.size(); ++i) {
+        const RenderOptions options = OptionsFor(cases[i]);
+        const auto start = Clock::now();
+        timed[i].renderer.Render(named.scene, camera, options, timed[i].depth, timed[i].cells);
+        timed[i].ms.push_back(
+            std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+      }
+    }
+  }
+  std::vector<double> medians;
+  for (Timed& t : timed) medians.push_back(Median(std::move(t.ms)));
+  return medians;
 }
 
 InkImage Scaled(const InkImage& image, double factor) {
@@ -128,14 +147,23 @@ struct CaseResult {
 }  // namespace
 
 int RunFidelityBench(const FidelityBenchOptions& options) {
-  const std::vector<NamedScene> scenes = Scenes(options.dataDirectory);
+  std::vector<NamedScene> scenes = Scenes(options.dataDirectory);
   if (scenes.size() < 3) {
     std::cerr << "termshade bench: run it from the source tree (or pass --data DIR)\n";
     return 1;
   }
+  if (!options.sceneName.empty()) {
+    std::erase_if(scenes, [&](const NamedScene& s) { return s.name != options.sceneName; });
+    if (scenes.empty()) {
+      std::cerr << "termshade bench: no scene named " << options.sceneName << "\n";
+      return 2;
+    }
+  }
   const int cols = options.widthCells, rows = options.heightCells;
-  std::ofstream csv(options.csvPath);
-  csv << "scene,mode,median_ms,time_vs_ramp,ssim,mse,ssim_unifont,flicker\n";
+  std::ofstream csv;
+  if (!options.timingOnly) csv.open(options.csvPath);
+  if (!options.timingOnly)
+    csv << "scene,mode,median_ms,time_vs_ramp,ssim,mse,ssim_unifont,flicker\n";
   std::printf(
       "termshade bench fidelity: %dx%d cells, %d views per scene, blurred SSIM and MSE "
       "against the exact 8x16-per-cell image, %s\n",
@@ -153,15 +181,26 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
       cameras.push_back(FitCamera(named.scene, view, cols, rows, 2.0));
       view.theta += 0.01;
       nudged.push_back(FitCamera(named.scene, view, cols, rows, 2.0));
+      if (options.timingOnly) continue;
       exact.push_back(ExactImage(named.scene, cameras.back(), OptionsFor({}), cols, rows, 1.0));
     }
-    // Step 2: every mode on those views.
+    // Step 2: every mode's frame time, interleaved, then its fidelity on those views.
+    const std::vector<ModeCase> cases = Cases();
+    const std::vector<double> medianMs = MedianFrameMs(named, cases, cameras, options);
     double rampMs[2] = {0.0, 0.0};
-    for (const ModeCase& c : Cases()) {
+    for (size_t i = 0; i < cases.size(); ++i) {
+      if (cases[i].mode == GlyphMode::kRamp) rampMs[cases[i].colour ? 1 : 0] = medianMs[i];
+    }
+    for (size_t i = 0; i < cases.size(); ++i) {
+      const ModeCase& c = cases[i];
       const RenderOptions renderOptions = OptionsFor(c);
       CaseResult result;
-      result.ms = MedianFrameMs(named, renderOptions, cameras, options);
-      if (c.mode == GlyphMode::kRamp) rampMs[c.colour ? 1 : 0] = result.ms;
+      result.ms = medianMs[i];
+      if (options.timingOnly) {
+        std::printf("%-15s %-17s %9.4f %7.2f\n", named.name.c_str(), c.Name().c_str(), result.ms,
+                    result.ms / rampMs[c.colour ? 1 : 0]);
+        continue;
+      }
       Renderer renderer;
       CellBuffer cells(cols, rows), moved(cols, rows);
       DepthBuffer depth;
@@ -193,6 +232,7 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
     }
     std::fflush(stdout);
   }
+  if (options.timingOnly) return 0;
   WriteSpeedFidelityPlot(points, MachineDescription(), options.svgPath);
   std::printf("wrote %s and %s\n", options.csvPath.c_str(), options.svgPath.c_str());
   return csv ? 0 : 1;

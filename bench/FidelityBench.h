@@ -14,6 +14,8 @@ struct FidelityBenchOptions {
   std::string csvPath = "bench-fidelity.csv";
   std::string svgPath = "bench-fidelity.svg";
   std::string dataDirectory = "data";
+  std::string sceneName;    ///< only this scene (empty: every scene)
+  bool timingOnly = false;  ///< frame times alone: no fidelity, flicker, CSV or SVG
 };
 
 int RunFidelityBench(const FidelityBenchOptions& options);

@@ -394,6 +394,10 @@ int Run(int argc, char** argv) {
   fidelityCommand
       ->add_option("--data", fidelityBench.dataDirectory, "the scenes' directory (default data)")
       ->type_name("DIR");
+  fidelityCommand->add_option("--scene", fidelityBench.sceneName,
+                              "only this scene (e.g. sphere_cone)");
+  fidelityCommand->add_flag("--timing-only", fidelityBench.timingOnly,
+                            "frame times alone (interleaved): no fidelity, CSV or SVG");
 
   termshade::AddExamples(app);
   bool done = false;

@@ -154,7 +154,8 @@ bool ClusterStage::Usable(const Scene& scene) {
 
 int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int threads,
                        DepthBuffer& depth, CellBuffer& cells) {
-  if (threads > 1 && !frame.scanline && scene.triangles.size() >= frame.threadsFromTriangles) {
+  if (threads > 1 && !frame.scanline && frame.sink == nullptr &&
+      scene.triangles.size() >= frame.threadsFromTriangles) {
     return DrawThreaded(scene, frame, threads, depth, cells);
   }
   const int width = cells.WidthCells(), height = cells.HeightCells();
@@ -164,7 +165,9 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
   int drawn = 0;
   auto rasterize = [&](const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                        uint32_t faceNumber) {
-    if (frame.scanline) {
+    if (frame.sink != nullptr) {
+      frame.sink->Draw(a, b, c, faceNumber);
+    } else if (frame.scanline) {
       RasterizeTriangleScanline(a, b, c, faceNumber, frame.rule, depth, cells);
     } else {
       RasterizeTriangle(a, b, c, faceNumber, frame.rule, depth, cells, frame.depthEncoding);

@@ -16,6 +16,16 @@
 
 namespace termshade {
 
+/// Takes a frame's triangles in draw order in place of the rasterizer.
+class TriangleSink {
+ public:
+  virtual void Draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                    uint32_t faceNumber) = 0;
+
+ protected:
+  ~TriangleSink() = default;
+};
+
 /// What a cluster-by-cluster frame needs that is fixed for the frame.
 struct ClusterFrame {
   Projection projection;
@@ -29,6 +39,7 @@ struct ClusterFrame {
   bool floatGeometry = false;
   bool scanline = false;            ///< the scanline variant: one thread only
   size_t threadsFromTriangles = 0;  ///< fewer triangles: one thread draws
+  TriangleSink* sink = nullptr;     ///< set: the triangles go to it, on one thread
 };
 
 /// The surface pass of zbuffer and cull: every vertex transformed, then the

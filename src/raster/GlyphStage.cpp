@@ -143,11 +143,10 @@ void SetTone(const Tone& tone, const std::array<int16_t, 256>& levelOf, uint32_t
 
 void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBuffer& cells,
                          DepthBuffer& depth) {
-  cells.Clear();
-  depth.Clear();
-  if (options.glyphs == GlyphMode::kAscii) ascii_.Prepare(in.grid);
+  if (in.writeDepth) depth.Clear();
+  if (options.glyphs == GlyphMode::kAscii) ascii_.Prepare(in.frame.Grid());
   // The mode's own grids with their sizes known to the compiler; any other (forced) at run time.
-  const SampleGrid g = in.grid;
+  const SampleGrid g = in.frame.Grid();
   if (g == SampleGrid{1, 2}) return ComposeGrid<1, 2>(in, options, cells, depth);
   if (g == SampleGrid{2, 2}) return ComposeGrid<2, 2>(in, options, cells, depth);
   if (g == SampleGrid{2, 3}) return ComposeGrid<2, 3>(in, options, cells, depth);
@@ -158,89 +157,91 @@ void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBu
 template <int kAcross, int kDown>
 void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
                              DepthBuffer& depth) {
-  const int k = kAcross > 0 ? kAcross : in.grid.across;
-  const int m = kDown > 0 ? kDown : in.grid.down;
+  const SampleGrid grid = in.frame.Grid();
+  const int k = kAcross > 0 ? kAcross : grid.across;
+  const int m = kDown > 0 ? kDown : grid.down;
   const GlyphMode mode = options.glyphs;
   const int partCount = in.pattern.Count();
-  const bool reduce = !(in.pattern == in.grid);
+  const bool reduce = !(in.pattern == grid);
   const SamplePattern all =
       partCount >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << partCount) - 1;
   // The ramp level of each intensity, once a frame.
   std::array<int16_t, 256> levelOf{};
   for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
-  const uint32_t* const sampleFaces = in.faces.FaceNumbers().data();
   const uint8_t* const faceIntensity = in.faceIntensities.data();
-  const size_t stride = static_cast<size_t>(in.faces.WidthCells());
   CellSamples fine, parts;
   fine.count = k * m;
-  for (int row = 0; row < cells.HeightCells(); ++row) {
-    const size_t rowStart = in.faces.Index(0, row * m);
-    for (int col = 0; col < cells.WidthCells(); ++col) {
-      // Step 1: the cell's samples, whether they all show one face, and the nearest depth.
-      const size_t cellStart = rowStart + static_cast<size_t>(col) * k;
-      const uint32_t firstFace = sampleFaces[cellStart];
-      bool oneFace = true;
-      for (int j = 0; j < m; ++j) {
-        for (int i = 0; i < k; ++i) {
-          const uint32_t face = sampleFaces[cellStart + j * stride + i];
-          fine.faces[j * k + i] = face;
-          oneFace = oneFace && face == firstFace;
-        }
-      }
-      if (oneFace && firstFace == 0) continue;  // background
-      fine.covered = 0;
-      float nearest = 0.0F;
+  const size_t cellCount = static_cast<size_t>(cells.WidthCells()) * cells.HeightCells();
+  for (size_t index = 0; index < cellCount; ++index) {
+    // Step 1: the cell's samples, whether they all show one face, and the nearest depth.
+    bool oneFace = true;
+    uint32_t firstFace = 0;
+    if (in.frame.Touched(index)) {
+      const uint32_t* const sampleFaces = in.frame.Faces(index).data();
+      firstFace = sampleFaces[0];
       for (int n = 0; n < k * m; ++n) {
-        const uint32_t face = fine.faces[n];
-        fine.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
-        fine.covered |= face != 0 ? SamplePattern{1} << n : 0;
-        if (in.writeDepth) {
-          nearest = std::max(nearest, in.depth.At(cellStart + (n / k) * stride + n % k));
-        }
+        const uint32_t face = sampleFaces[n];
+        fine.faces[n] = face;
+        oneFace = oneFace && face == firstFace;
       }
-      if (reduce) ReduceToParts(fine, in.grid, in.pattern, parts);
-      const CellSamples& s = reduce ? parts : fine;
-      // Step 2: the glyph and its colours.
-      const size_t index = cells.Index(col, row);
-      SamplePattern ink = s.covered;
-      Tone fore, back;
-      char32_t glyph = U' ';
-      switch (mode) {
-        case GlyphMode::kRamp: {
-          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
-          glyph = options.ramp.Glyph(levelOf[fore.intensity]);
-          break;
-        }
-        case GlyphMode::kAscii: {
-          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-          glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
-                                    : ascii_.MatchInk(s.values.data(), s.covered);
-          break;
-        }
-        case GlyphMode::kBraille:
-          fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-          glyph = PatternGlyph(mode, s.covered);
-          break;
-        default:          // blocks, quadrants, sextants
-          if (oneFace) {  // one tone: a full block
-            ink = all;
-            fore = {firstFace, s.values[0]};
-          } else {
-            if (options.twoColour) ink = BrighterHalf(s);
-            if (ink == 0) ink = all;
-            fore = ToneOf(s, ink);
-            if (options.twoColour) back = ToneOf(s, all & ~ink);
-          }
-          glyph = PatternGlyph(mode, ink);
-          break;
-      }
-      cells.Glyphs()[index] = glyph;
-      SetTone(fore, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
-              cells.Intensities()[index]);
-      SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
-              cells.BackIntensities()[index]);
-      if (in.writeDepth) depth.At(index) = nearest;
     }
+    if (oneFace && firstFace == 0) {  // background
+      SetTone({}, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
+              cells.Intensities()[index]);
+      SetTone({}, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
+              cells.BackIntensities()[index]);
+      cells.Glyphs()[index] = U' ';
+      continue;
+    }
+    fine.covered = 0;
+    float nearest = 0.0F;
+    for (int n = 0; n < k * m; ++n) {
+      const uint32_t face = fine.faces[n];
+      fine.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
+      fine.covered |= face != 0 ? SamplePattern{1} << n : 0;
+      if (in.writeDepth) nearest = std::max(nearest, in.frame.Depths(index)[n]);
+    }
+    if (reduce) ReduceToParts(fine, grid, in.pattern, parts);
+    const CellSamples& s = reduce ? parts : fine;
+    // Step 2: the glyph and its colours.
+    SamplePattern ink = s.covered;
+    Tone fore, back;
+    char32_t glyph = U' ';
+    switch (mode) {
+      case GlyphMode::kRamp: {
+        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
+        glyph = options.ramp.Glyph(levelOf[fore.intensity]);
+        break;
+      }
+      case GlyphMode::kAscii: {
+        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
+        glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
+                                  : ascii_.MatchInk(s.values.data(), s.covered);
+        break;
+      }
+      case GlyphMode::kBraille:
+        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
+        glyph = PatternGlyph(mode, s.covered);
+        break;
+      default:          // blocks, quadrants, sextants
+        if (oneFace) {  // one tone: a full block
+          ink = all;
+          fore = {firstFace, s.values[0]};
+        } else {
+          if (options.twoColour) ink = BrighterHalf(s);
+          if (ink == 0) ink = all;
+          fore = ToneOf(s, ink);
+          if (options.twoColour) back = ToneOf(s, all & ~ink);
+        }
+        glyph = PatternGlyph(mode, ink);
+        break;
+    }
+    cells.Glyphs()[index] = glyph;
+    SetTone(fore, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
+            cells.Intensities()[index]);
+    SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
+            cells.BackIntensities()[index]);
+    if (in.writeDepth) depth.At(index) = nearest;
   }
 }
 

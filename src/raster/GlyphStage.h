@@ -6,6 +6,7 @@
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
 #include "raster/RenderOptions.h"
+#include "raster/SampleFrame.h"
 #include "shade/AsciiMatcher.h"
 
 namespace termshade {
@@ -16,15 +17,13 @@ namespace termshade {
 /// Keeps the ascii matcher's cache between frames.
 class GlyphStage {
  public:
-  /// A frame of samples: faces per sample, the intensity (0..255) of each
-  /// face seen (indexed by face number - 1), and whether depth is to be kept
-  /// (then the cell's depth is its nearest sample's).
+  /// A frame of samples (faces and depth per sample, the grid), the
+  /// intensity (0..255) of each face seen (indexed by face number - 1), and
+  /// whether depth is to be kept (then the cell's depth is its nearest sample's).
   struct Samples {
-    const CellBuffer& faces;
-    const DepthBuffer& depth;
+    const SampleFrame& frame;
     std::span<const uint8_t> faceIntensities;
-    SampleGrid grid;     ///< samples a cell
-    SampleGrid pattern;  ///< the glyph's parts; grid is a multiple of it (SPEC 11 modes: equal)
+    SampleGrid pattern;  ///< the glyph's parts; the frame's grid is a multiple of it
     bool writeDepth = true;
   };
   void Compose(const Samples& samples, const RenderOptions& options, CellBuffer& cells,

@@ -6,6 +6,7 @@
 #include "geometry/ViewingTransform.h"
 #include "raster/FixedPoint.h"
 #include "raster/LineRasterizer.h"
+#include "raster/SampledRasterizer.h"
 #include "raster/VertexStage.h"
 
 namespace termshade {
@@ -32,6 +33,45 @@ bool DrawsByCluster(const Scene& scene, const RenderOptions& options) {
          options.variant.clusters && options.variant.depthFormat != DepthFormat::kFixed16InverseZ &&
          ClusterStage::Usable(scene);
 }
+
+// Adds a face not seen before to `seen`, marking its level 0 (EndSeenFaces
+// restores -1); runs of one face look it up once.
+inline void MarkSeen(uint32_t faceNumber, uint32_t& previous, std::vector<int16_t>& levels,
+                     std::vector<uint32_t>& seen) {
+  if (faceNumber == previous) return;
+  previous = faceNumber;
+  if (faceNumber != 0 && levels[faceNumber - 1] == -1) {
+    levels[faceNumber - 1] = 0;
+    seen.push_back(faceNumber - 1);
+  }
+}
+
+RenderOptions ResolvedOptions(const Scene& scene, const RenderOptions& options) {
+  RenderOptions resolved = options;
+  resolved.method = ResolvedMethod(scene, options.method);
+  return resolved;
+}
+
+// The sampled rasterizer serves cluster frames on one thread with the product's depth.
+bool DrawsSampled(const Scene& scene, const RenderOptions& single, SampleGrid grid) {
+  const bool oneThread = ResolvedThreadCount(single.threads) <= 1 ||
+                         scene.triangles.size() < single.threadsFromTriangles;
+  return single.variant.sampledRasterizer && DrawsByCluster(scene, single) &&
+         !single.variant.scanline && single.variant.depthFormat == DepthFormat::kFloatInverseZ &&
+         SampledRasterizer::Supports(grid) && oneThread;
+}
+
+class SampleSink final : public TriangleSink {
+ public:
+  explicit SampleSink(SampledRasterizer& rasterizer) : rasterizer_(rasterizer) {}
+  void Draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+            uint32_t faceNumber) override {
+    rasterizer_.Draw(a, b, c, faceNumber);
+  }
+
+ private:
+  SampledRasterizer& rasterizer_;
+};
 
 DepthRule SurfaceRule(const RenderOptions& options) {
   return options.method == Method::kZBuffer ? DepthRule::kNearestWins
@@ -89,10 +129,10 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
 RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
                                     const RenderOptions& options, DepthBuffer& depth,
                                     CellBuffer& cells) {
-  const int k = lastGrid_.across, m = lastGrid_.down;
-  const Camera fine = SampleCamera(camera, lastGrid_);
-  // Render below clears what it reads; only the faces are kept a sample.
-  const int fineWidth = cells.WidthCells() * k, fineHeight = cells.HeightCells() * m;
+  const SampleGrid grid = lastGrid_;
+  const Camera fine = SampleCamera(camera, grid);
+  const int fineWidth = cells.WidthCells() * grid.across;
+  const int fineHeight = cells.HeightCells() * grid.down;
   if (!fineCells_.FacesOnly() || fineCells_.WidthCells() != fineWidth ||
       fineCells_.HeightCells() != fineHeight) {
     fineCells_.ResizeFacesOnly(fineWidth, fineHeight);
@@ -100,18 +140,57 @@ RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
   if (fineDepth_.WidthCells() != fineWidth || fineDepth_.HeightCells() != fineHeight) {
     fineDepth_.Resize(fineWidth, fineHeight);
   }
+  sampleFrame_.Begin(cells.WidthCells(), cells.HeightCells(), grid);
   RenderOptions single = options;
   single.variant.samples = {1, 1};
   single.glyphs = GlyphMode::kRamp;
-  const SampleGrid grid = lastGrid_;
-  const RenderStats stats = Render(scene, fine, single, fineDepth_, fineCells_);
-  lastGrid_ = grid;
-  const bool writeDepth =
-      options.keepDepth || ResolvedMethod(scene, options.method) == Method::kZBuffer;
+  RenderStats stats;
+  if (DrawsSampled(scene, ResolvedOptions(scene, single), grid)) {
+    stats = DrawSampleFrame(scene, fine, ResolvedOptions(scene, single));
+    fineCellsCurrent_ = false;
+  } else {
+    // Render below clears what it reads; only the faces are kept a sample.
+    stats = Render(scene, fine, single, fineDepth_, fineCells_);
+    lastGrid_ = grid;
+    const bool depthKept = NeedsDepth(ResolvedOptions(scene, single));
+    sampleFrame_.CopyFrom(fineCells_, depthKept ? &fineDepth_ : nullptr);
+    fineCellsCurrent_ = true;
+  }
   glyphStage_.Compose(
-      {fineCells_, fineDepth_, faceIntensities_, grid, PatternSampleGrid(options), writeDepth},
-      options, cells, depth);
+      {sampleFrame_, faceIntensities_, PatternSampleGrid(options), options.keepDepth}, options,
+      cells, depth);
   return stats;
+}
+
+// The cluster frame of Render, drawn by the sampled rasterizer into
+// sampleFrame_, then the faces it shows shaded (the glyph stage reads them).
+RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
+                                      const RenderOptions& single) {
+  clipPlanes_ = MakeViewClipPlanes(fine.projection, NearDistance(scene));
+  eyeWorld_ = EyePositionWorld(fine.view);
+  SampledRasterizer rasterizer(sampleFrame_, SurfaceRule(single));
+  SampleSink sink(rasterizer);
+  RenderStats stats;
+  stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
+  BeginSeenFaces(scene);
+  uint32_t previous = 0;
+  for (size_t cell = 0; cell < sampleFrame_.CellCount(); ++cell) {
+    if (!sampleFrame_.Touched(cell)) continue;
+    for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
+      MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
+    }
+  }
+  ShadeSeenFaces(scene, single);
+  stats.facesVisible = EndSeenFaces();
+  return stats;
+}
+
+const CellBuffer& Renderer::Samples() const {
+  if (!fineCellsCurrent_) {
+    sampleFrame_.CopyTo(fineCells_);
+    fineCellsCurrent_ = true;
+  }
+  return fineCells_;
 }
 
 void Renderer::TransformVertices(const Scene& scene, const Camera& camera,
@@ -233,7 +312,7 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const Rende
 }
 
 int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const RenderOptions& options,
-                           DepthBuffer& depth, CellBuffer& cells) {
+                           DepthBuffer& depth, CellBuffer& cells, TriangleSink* sink) {
   eyeFromWorld_ = EyeFromWorld(camera.view);
   ClusterFrame frame;
   frame.projection = camera.projection;
@@ -247,6 +326,7 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   frame.floatGeometry = options.variant.floatGeometry;
   frame.scanline = options.variant.scanline;
   frame.threadsFromTriangles = options.threadsFromTriangles;
+  frame.sink = sink;
   // The scanline variant steps rows in float from its first row: one band only.
   const int threads = options.variant.scanline ? 1 : ResolvedThreadCount(options.threads);
   return clusterStage_.Draw(scene, frame, threads, depth, cells);
@@ -268,23 +348,21 @@ int Renderer::DrawEdges(const Scene& scene, const Camera& camera, const RenderOp
   return drawn;
 }
 
-// Turns the face seen in each cell into a ramp glyph; returns the faces seen.
-int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells) {
-  // Step 1: the faces seen, found from the cells (no pass over all faces).
-  auto& faces = cells.FaceNumbers();
+void Renderer::BeginSeenFaces(const Scene& scene) {
   faceLevels_.resize(scene.FaceCount(), -1);
   faceIntensities_.resize(scene.FaceCount(), 0);
   seenFaces_.clear();
-  uint32_t previous = 0;  // runs of one face look it up once
-  for (uint32_t faceNumber : faces) {
-    if (faceNumber == previous) continue;
-    previous = faceNumber;
-    if (faceNumber != 0 && faceLevels_[faceNumber - 1] == -1) {
-      faceLevels_[faceNumber - 1] = 0;  // marked; restored to -1 below
-      seenFaces_.push_back(faceNumber - 1);
-    }
-  }
-  // Step 2: n.s per seen face, with n turned towards the eye, in world space.
+}
+
+// Adds the faces of these samples or cells not seen before to seenFaces_.
+void Renderer::MarkSeenFaces(std::span<const uint32_t> faceNumbers) {
+  uint32_t previous = 0;
+  for (uint32_t faceNumber : faceNumbers) MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
+}
+
+// The level and intensity of every seen face.
+void Renderer::ShadeSeenFaces(const Scene& scene, const RenderOptions& options) {
+  // Step 1: n.s per seen face, with n turned towards the eye, in world space.
   const Mat4& m = eyeFromWorld_;
   const Vec3 s = options.sunEye;
   const Vec3 sunWorld{m.At(0, 0) * s.x + m.At(1, 0) * s.y + m.At(2, 0) * s.z,
@@ -299,7 +377,7 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
     minDot = std::min(minDot, dot);
     maxDot = std::max(maxDot, dot);
   }
-  // Step 3: levels per face, then glyphs per cell.
+  // Step 2: levels and intensities per face.
   for (size_t i = 0; i < seenFaces_.size(); ++i) {
     const double intensity =
         options.shade == ShadeMode::kContrast
@@ -309,6 +387,20 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
     const double clamped = std::isnan(intensity) ? 0.0 : std::clamp(intensity, 0.0, 1.0);
     faceIntensities_[seenFaces_[i]] = static_cast<uint8_t>(std::lround(255.0 * clamped));
   }
+}
+
+// Unmarks the seen faces' levels; returns how many faces were seen.
+int Renderer::EndSeenFaces() {
+  for (uint32_t f : seenFaces_) faceLevels_[f] = -1;
+  return static_cast<int>(seenFaces_.size());
+}
+
+// Turns the face seen in each cell into a ramp glyph; returns the faces seen.
+int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells) {
+  const auto& faces = cells.FaceNumbers();
+  BeginSeenFaces(scene);
+  MarkSeenFaces(faces);
+  ShadeSeenFaces(scene, options);
   if (cells.FacesOnly()) {
     // Samples: the glyph stage reads faceIntensities_ of the faces seen.
   } else if (options.method != Method::kWire) {
@@ -327,8 +419,7 @@ int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellB
       if (cells.Levels()[i] >= 0) intensities[i] = 255;
     }
   }
-  for (uint32_t f : seenFaces_) faceLevels_[f] = -1;
-  return static_cast<int>(seenFaces_.size());
+  return EndSeenFaces();
 }
 
 }  // namespace termshade

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "raster/DepthBuffer.h"
 #include "raster/GlyphStage.h"
 #include "raster/RenderOptions.h"
+#include "raster/SampleFrame.h"
 #include "raster/TriangleRasterizer.h"
 
 namespace termshade {
@@ -38,14 +40,16 @@ class Renderer {
   RenderStats Render(const Scene& scene, const Camera& camera, const RenderOptions& options,
                      DepthBuffer& depth, CellBuffer& cells);
 
-  /// The last frame's samples when it had several a cell (grid.across x
-  /// grid.down per cell, faces and intensities); otherwise the frame itself is the samples.
-  const CellBuffer& Samples() const { return fineCells_; }
+  /// The last frame's samples when it had several a cell, as a one-sample
+  /// frame of faces at grid.across x grid.down times the cells; otherwise the
+  /// frame itself is the samples.
+  const CellBuffer& Samples() const;
   SampleGrid LastSampleGrid() const { return lastGrid_; }
 
  private:
   RenderStats RenderSampled(const Scene& scene, const Camera& camera, const RenderOptions& options,
                             DepthBuffer& depth, CellBuffer& cells);
+  RenderStats DrawSampleFrame(const Scene& scene, const Camera& fine, const RenderOptions& single);
   void TransformVertices(const Scene& scene, const Camera& camera, const RenderVariant& variant,
                          bool needEyeZ);
   bool FaceIsFront(const Scene& scene, uint32_t face) const;
@@ -56,10 +60,14 @@ class Renderer {
   int DrawSurfaces(const Scene& scene, const Camera& camera, const RenderOptions& options,
                    DepthBuffer& depth, CellBuffer& cells);
   int DrawClusters(const Scene& scene, const Camera& camera, const RenderOptions& options,
-                   DepthBuffer& depth, CellBuffer& cells);
+                   DepthBuffer& depth, CellBuffer& cells, TriangleSink* sink = nullptr);
   int DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,
                 DepthBuffer& depth, CellBuffer& cells);
   int ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells);
+  void BeginSeenFaces(const Scene& scene);
+  void MarkSeenFaces(std::span<const uint32_t> faceNumbers);
+  void ShadeSeenFaces(const Scene& scene, const RenderOptions& options);
+  int EndSeenFaces();
 
   ViewClipPlanes clipPlanes_{};
   Mat4 eyeFromWorld_;
@@ -67,8 +75,12 @@ class Renderer {
   DepthEncoding depthEncoding_;
   bool scanline_ = false;
   float maxW_ = 0.0F;
-  CellBuffer fineCells_;  ///< several samples a cell: the frame at k x m samples a cell
+  /// Several samples a cell: the frame at k x m samples a cell, row-major
+  /// (drawn so when the sampled rasterizer does not serve; else filled when asked for).
+  mutable CellBuffer fineCells_;
+  mutable bool fineCellsCurrent_ = false;
   DepthBuffer fineDepth_;
+  SampleFrame sampleFrame_;  ///< the same samples cell by cell: what the glyph stage reads
   GlyphStage glyphStage_;
   ClusterStage clusterStage_;
   SampleGrid lastGrid_;

@@ -1,0 +1,281 @@
+#include "raster/SampledRasterizer.h"
+
+#include <algorithm>
+#include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "raster/FixedPoint.h"
+
+namespace termshade {
+namespace {
+
+// Edge function of a -> b at the origin sample and its steps per sample, as
+// TriangleRasterizer.cpp's MakeEdge (positive inside a clockwise triangle,
+// biased by 1 on edges that are neither top nor left).
+struct Edge {
+  int64_t stepX = 0;
+  int64_t stepY = 0;
+  int64_t atOrigin = 0;
+};
+
+Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int64_t originY) {
+  const int64_t dx = int64_t{b.x} - a.x;
+  const int64_t dy = int64_t{b.y} - a.y;
+  const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
+  return {-dy * kFixedOne, dx * kFixedOne,
+          dx * (originY - a.y) - dy * (originX - a.x) - (topLeft ? 0 : 1)};
+}
+
+// Boxes of at most this many samples are drawn sample by sample (measured:
+// 32 and cell by cell for bigger boxes is about 5% quicker on sphere_cone
+// than either alone).
+constexpr int kSmallBox = 32;
+
+// Samples s (centers s * 256 + 128) in [low, high], clipped to [0, limit).
+void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
+  first = std::max(0, (low - kFixedHalf + kFixedOne - 1) >> kSubCellBits);
+  last = std::min(limit - 1, (high - kFixedHalf) >> kSubCellBits);
+}
+
+// A triangle's edges from an origin sample and its depth weights, as
+// RasterizeTriangle sets them up (v0, v1, v2 clockwise, area > 0).
+struct Setup {
+  Edge e12, e20, e01;  // weights of v0, v1, v2
+  float k0, k1, k2;    // as DepthInterpolator<kFloatInverseZ>
+};
+
+Setup MakeSetup(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+                int64_t area, int64_t originX, int64_t originY) {
+  const float invArea = 1.0F / static_cast<float>(area);
+  return {MakeEdge(v1, v2, originX, originY),
+          MakeEdge(v2, v0, originX, originY),
+          MakeEdge(v0, v1, originX, originY),
+          v0.w * invArea,
+          v1.w * invArea,
+          v2.w * invArea};
+}
+
+// One covered sample by the rule: the same float operations in the same order
+// as RasterizeTriangle.
+template <DepthRule kRule, typename Lane>
+void StoreSample(const Setup& t, Lane w12, Lane w20, Lane w01, uint32_t faceNumber, uint32_t& face,
+                 float& stored) {
+  if constexpr (kRule == DepthRule::kCoverOnly) {
+    face = faceNumber;
+  } else {
+    const float w = static_cast<float>(w12) * t.k0 + static_cast<float>(w20) * t.k1 +
+                    static_cast<float>(w01) * t.k2;
+    if (kRule == DepthRule::kOverwrite || w > stored || (w == stored && faceNumber < face)) {
+      stored = w;
+      face = faceNumber;
+    }
+  }
+}
+
+// The least and greatest offset of an edge's value over a cell's k x m
+// samples from its first (at the corners).
+template <int K, int M>
+void CornerRange(const Edge& e, int64_t& least, int64_t& greatest) {
+  least = std::min<int64_t>(0, (K - 1) * e.stepX) + std::min<int64_t>(0, (M - 1) * e.stepY);
+  greatest = std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
+}
+
+// Four lanes (GCC vector extensions; SSE2 registers on x86-64): a cell's
+// samples in one or two of them, the rest padding.
+typedef int32_t Int4 __attribute__((vector_size(16)));
+typedef float Float4 __attribute__((vector_size(16)));
+
+bool AnyLane(Int4 mask) {
+#if defined(__SSE2__)
+  return _mm_movemask_epi8(reinterpret_cast<__m128i>(mask)) != 0;
+#else
+  return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
+#endif
+}
+
+// DrawCells with 32-bit edge values, four samples of a cell at a time: the
+// same integers, conversions and float operations, lane by lane.
+template <int K, int M, DepthRule kRule>
+void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+                     int64_t area, uint32_t faceNumber, SampleFrame& frame, int cellCol0,
+                     int cellCol1, int cellRow0, int cellRow1) {
+  constexpr int kCount = K * M;
+  constexpr int kVectors = (kCount + 3) / 4;
+  const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
+  const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
+  const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
+  const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
+  Int4 o12[kVectors]{}, o20[kVectors]{}, o01[kVectors]{}, valid[kVectors]{};
+  for (int n = 0; n < kCount; ++n) {
+    const int i = n % K, j = n / K;
+    o12[n / 4][n % 4] = static_cast<int32_t>(i * e12.stepX + j * e12.stepY);
+    o20[n / 4][n % 4] = static_cast<int32_t>(i * e20.stepX + j * e20.stepY);
+    o01[n / 4][n % 4] = static_cast<int32_t>(i * e01.stepX + j * e01.stepY);
+    valid[n / 4][n % 4] = -1;
+  }
+  int64_t least12 = 0, least20 = 0, least01 = 0, greatest12 = 0, greatest20 = 0, greatest01 = 0;
+  CornerRange<K, M>(e12, least12, greatest12);
+  CornerRange<K, M>(e20, least20, greatest20);
+  CornerRange<K, M>(e01, least01, greatest01);
+  const auto face = static_cast<int32_t>(faceNumber);
+  uint32_t* const faces = frame.FaceData();
+  float* const depth = frame.DepthData();
+  const size_t width = static_cast<size_t>(frame.WidthCells());
+  int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
+  for (int row = cellRow0; row <= cellRow1; ++row) {
+    int64_t b12 = row12, b20 = row20, b01 = row01;
+    size_t cell = row * width + cellCol0;
+    for (int col = cellCol0; col <= cellCol1;
+         ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
+      // Step 1: the corners decide cells wholly outside one edge (and wholly inside all).
+      if (b12 + greatest12 < 0 || b20 + greatest20 < 0 || b01 + greatest01 < 0) continue;
+      const bool inside = b12 + least12 >= 0 && b20 + least20 >= 0 && b01 + least01 >= 0;
+      const auto l12 = static_cast<int32_t>(b12), l20 = static_cast<int32_t>(b20),
+                 l01 = static_cast<int32_t>(b01);
+      Int4 covered[kVectors];
+      bool any = inside;
+      for (int h = 0; h < kVectors; ++h) {
+        covered[h] = valid[h];
+        if (!inside) {
+          covered[h] &= ((l12 + o12[h]) | (l20 + o20[h]) | (l01 + o01[h])) >= 0;
+          any = any || AnyLane(covered[h]);
+        }
+      }
+      if (!any) continue;
+      // Step 2: the covered samples, by the rule (padding lanes written back unchanged).
+      frame.Touch(cell);
+      for (int h = 0; h < kVectors; ++h) {
+        uint32_t* const laneFaces = faces + cell * kCount + 4 * h;
+        Int4 storedFaces;
+        std::memcpy(&storedFaces, laneFaces, sizeof storedFaces);
+        if constexpr (kRule == DepthRule::kCoverOnly) {
+          storedFaces = covered[h] ? face : storedFaces;
+        } else {
+          float* const laneDepth = depth + cell * kCount + 4 * h;
+          Float4 stored;
+          std::memcpy(&stored, laneDepth, sizeof stored);
+          const Float4 w = __builtin_convertvector(l12 + o12[h], Float4) * t.k0 +
+                           __builtin_convertvector(l20 + o20[h], Float4) * t.k1 +
+                           __builtin_convertvector(l01 + o01[h], Float4) * t.k2;
+          Int4 wins = covered[h];
+          if constexpr (kRule == DepthRule::kNearestWins) {
+            wins &= (w > stored) | ((w == stored) & (face < storedFaces));
+          }
+          stored = wins ? w : stored;
+          storedFaces = wins ? face : storedFaces;
+          std::memcpy(laneDepth, &stored, sizeof stored);
+        }
+        std::memcpy(laneFaces, &storedFaces, sizeof storedFaces);
+      }
+    }
+    row12 += M * e12.stepY;
+    row20 += M * e20.stepY;
+    row01 += M * e01.stepY;
+  }
+}
+
+// RasterizeTriangle's step 4 sample by sample over the box, each sample
+// written at its place in the cell-major frame: small triangles, whose box
+// holds few samples.
+template <int K, int M, DepthRule kRule>
+void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+                 int64_t area, uint32_t faceNumber, SampleFrame& frame, int col0, int col1,
+                 int row0, int row1) {
+  constexpr int kCount = K * M;
+  const int64_t originX = int64_t{col0} * kFixedOne + kFixedHalf;
+  const int64_t originY = int64_t{row0} * kFixedOne + kFixedHalf;
+  const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
+  const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
+  uint32_t* const faces = frame.FaceData();
+  float* const depth = frame.DepthData();
+  const size_t width = static_cast<size_t>(frame.WidthCells());
+  int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
+  for (int row = row0; row <= row1; ++row) {
+    int64_t w12 = row12, w20 = row20, w01 = row01;
+    const size_t rowCells = static_cast<size_t>(row / M) * width;
+    const int laneRow = (row % M) * K;
+    for (int col = col0; col <= col1; ++col) {
+      if ((w12 | w20 | w01) >= 0) {
+        const size_t cell = rowCells + static_cast<size_t>(col / K);
+        const size_t index = cell * kCount + laneRow + col % K;
+        frame.Touch(cell);
+        StoreSample<kRule>(t, w12, w20, w01, faceNumber, faces[index], depth[index]);
+      }
+      w12 += e12.stepX;
+      w20 += e20.stepX;
+      w01 += e01.stepX;
+    }
+    row12 += e12.stepY;
+    row20 += e20.stepY;
+    row01 += e01.stepY;
+  }
+}
+
+template <int K, int M, DepthRule kRule>
+void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                  uint32_t faceNumber, SampleFrame& frame) {
+  // Step 1: the samples the bounding box holds, as RasterizeTriangle finds them.
+  const int32_t minX = std::min({a.x, b.x, c.x}), maxX = std::max({a.x, b.x, c.x});
+  int col0 = 0, col1 = 0, row0 = 0, row1 = 0;
+  SampleRange(minX, maxX, frame.WidthCells() * K, col0, col1);
+  if (col0 > col1) return;
+  const int32_t minY = std::min({a.y, b.y, c.y}), maxY = std::max({a.y, b.y, c.y});
+  SampleRange(minY, maxY, frame.HeightCells() * M, row0, row1);
+  if (row0 > row1) return;
+  // Step 2: orient clockwise on screen; drop empty triangles.
+  const RasterVertex* v0 = &a;
+  const RasterVertex* v1 = &b;
+  const RasterVertex* v2 = &c;
+  int64_t area = (int64_t{v1->x} - v0->x) * (int64_t{v2->y} - v0->y) -
+                 (int64_t{v1->y} - v0->y) * (int64_t{v2->x} - v0->x);
+  if (area == 0) return;
+  if (area < 0) {
+    std::swap(v1, v2);
+    area = -area;
+  }
+  // Step 3: 32-bit lanes when |edge| <= 2 extent (extent + a cell) + 1 < 2^31
+  // for every sample of the cells the box touches.
+  const int64_t extent = std::max(int64_t{maxX} - minX, int64_t{maxY} - minY);
+  const int64_t reach = extent + int64_t{std::max(K, M)} * kFixedOne;
+  // Small boxes and 1x2 cells sample by sample; the rest cell by cell where
+  // 32 bits hold every edge value, else (huge triangles) sample by sample.
+  const bool fits32 = 2 * extent * reach + 1 < (int64_t{1} << 31) - 1;
+  if ((col1 - col0 + 1) * (row1 - row0 + 1) <= kSmallBox || K * M <= 2 || !fits32) {
+    DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
+  } else {
+    DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
+                                 row0 / M, row1 / M);
+  }
+}
+
+template <int K, int M>
+SampledRasterizer::DrawFunction ForRule(DepthRule rule) {
+  switch (rule) {
+    case DepthRule::kCoverOnly:
+      return DrawTriangle<K, M, DepthRule::kCoverOnly>;
+    case DepthRule::kOverwrite:
+      return DrawTriangle<K, M, DepthRule::kOverwrite>;
+    case DepthRule::kNearestWins:
+      break;
+  }
+  return DrawTriangle<K, M, DepthRule::kNearestWins>;
+}
+
+}  // namespace
+
+bool SampledRasterizer::Supports(SampleGrid grid) {
+  return grid == SampleGrid{1, 2} || grid == SampleGrid{2, 2} || grid == SampleGrid{2, 3} ||
+         grid == SampleGrid{2, 4};
+}
+
+SampledRasterizer::SampledRasterizer(SampleFrame& frame, DepthRule rule) : frame_(frame) {
+  const SampleGrid g = frame.Grid();
+  if (g == SampleGrid{1, 2}) draw_ = ForRule<1, 2>(rule);
+  if (g == SampleGrid{2, 2}) draw_ = ForRule<2, 2>(rule);
+  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3>(rule);
+  if (g == SampleGrid{2, 4}) draw_ = ForRule<2, 4>(rule);
+}
+
+}  // namespace termshade
