@@ -10,9 +10,9 @@ namespace {
 
 // Bounding sphere about the box center of the corners, a hair larger than
 // the farthest corner so rounding cannot leave one outside.
-void FitSphere(const Scene& scene, SceneCluster& c) {
-  Vec3 low = scene.verticesWorld[scene.triangles[c.firstTriangle].vertices[0]], high = low;
-  for (uint32_t t = c.firstTriangle; t < c.triangleEnd; ++t) {
+void FitSphere(const Scene& scene, std::span<const uint32_t> members, SceneCluster& c) {
+  Vec3 low = scene.verticesWorld[scene.triangles[members.front()].vertices[0]], high = low;
+  for (const uint32_t t : members) {
     for (const uint32_t v : scene.triangles[t].vertices) {
       const Vec3 p = scene.verticesWorld[v];
       low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
@@ -21,7 +21,7 @@ void FitSphere(const Scene& scene, SceneCluster& c) {
   }
   c.centerWorld = (low + high) * 0.5;
   double radius = 0.0;
-  for (uint32_t t = c.firstTriangle; t < c.triangleEnd; ++t) {
+  for (const uint32_t t : members) {
     for (const uint32_t v : scene.triangles[t].vertices) {
       radius = std::max(radius, Length(scene.verticesWorld[v] - c.centerWorld));
     }
@@ -31,9 +31,9 @@ void FitSphere(const Scene& scene, SceneCluster& c) {
 
 // Calls visit(plane) once per run of the cluster's triangles sharing a face.
 template <typename Visit>
-void ForEachFace(const Scene& scene, const SceneCluster& c, Visit&& visit) {
+void ForEachFace(const Scene& scene, std::span<const uint32_t> members, Visit&& visit) {
   uint32_t lastFace = UINT32_MAX;
-  for (uint32_t t = c.firstTriangle; t < c.triangleEnd; ++t) {
+  for (const uint32_t t : members) {
     const uint32_t face = scene.triangles[t].face;
     if (face == lastFace) continue;
     lastFace = face;
@@ -44,10 +44,10 @@ void ForEachFace(const Scene& scene, const SceneCluster& c, Visit&& visit) {
 // The cone of the faces' unit normals about their normalized sum, widened a
 // little for rounding; faces with a zero normal are never front-facing and
 // do not count.
-void FitCone(const Scene& scene, SceneCluster& c) {
+void FitCone(const Scene& scene, std::span<const uint32_t> members, SceneCluster& c) {
   Vec3 sum{};
   bool any = false;
-  ForEachFace(scene, c, [&](const FacePlane& plane) {
+  ForEachFace(scene, members, [&](const FacePlane& plane) {
     if (Dot(plane.normal, plane.normal) == 0.0) {
       c.anyDegenerate = true;
       return;
@@ -60,7 +60,7 @@ void FitCone(const Scene& scene, SceneCluster& c) {
   if (!any || !(length > 1e-6)) return;
   c.coneAxis = sum * (1.0 / length);
   double coneCos = 1.0, heightMin = INFINITY, heightMax = -INFINITY;
-  ForEachFace(scene, c, [&](const FacePlane& plane) {
+  ForEachFace(scene, members, [&](const FacePlane& plane) {
     if (Dot(plane.normal, plane.normal) == 0.0) return;
     coneCos = std::min(coneCos, Dot(plane.normal, c.coneAxis));
     const double height = Dot(plane.normal, c.centerWorld) - plane.offset;
@@ -72,19 +72,93 @@ void FitCone(const Scene& scene, SceneCluster& c) {
   c.heightMax = heightMax;
 }
 
+// 10 bits of a coordinate spread to every third bit.
+uint32_t SpreadBits(uint32_t x) {
+  x = (x | (x << 16)) & 0x030000FFU;
+  x = (x | (x << 8)) & 0x0300F00FU;
+  x = (x | (x << 4)) & 0x030C30C3U;
+  x = (x | (x << 2)) & 0x09249249U;
+  return x;
+}
+
+// Runs of this many consecutive triangles stay together: a cluster reads a
+// few runs of neighbouring memory rather than 64 scattered triangles.
+constexpr size_t kRunTriangles = 16;
+
+// The triangles ordered along a Morton curve of the centroids of their runs
+// (ties in scene order): neighbours on the surface come out close together.
+std::vector<uint32_t> MortonOrder(const Scene& scene) {
+  const size_t count = scene.triangles.size();
+  const size_t runCount = (count + kRunTriangles - 1) / kRunTriangles;
+  std::vector<Vec3> centroids(runCount);
+  Vec3 low{INFINITY, INFINITY, INFINITY}, high = low * -1.0;
+  for (size_t r = 0; r < runCount; ++r) {
+    Vec3 sum{};
+    for (size_t t = r * kRunTriangles; t < std::min(count, (r + 1) * kRunTriangles); ++t) {
+      for (const uint32_t v : scene.triangles[t].vertices) sum = sum + scene.verticesWorld[v];
+    }
+    centroids[r] = sum;
+    if (!IsFinite(sum)) continue;
+    low = {std::min(low.x, sum.x), std::min(low.y, sum.y), std::min(low.z, sum.z)};
+    high = {std::max(high.x, sum.x), std::max(high.y, sum.y), std::max(high.z, sum.z)};
+  }
+  auto quantize = [](double value, double from, double to) {
+    const double unit = (value - from) / (to - from);
+    if (!(unit > 0.0)) return 0U;  // NaN too
+    return static_cast<uint32_t>(std::min(1023.0, unit * 1024.0));
+  };
+  std::vector<uint32_t> codes(runCount), order(runCount), codesOut(runCount), orderOut(runCount);
+  for (size_t r = 0; r < runCount; ++r) {
+    const Vec3 p = centroids[r];
+    codes[r] = SpreadBits(quantize(p.x, low.x, high.x)) |
+               (SpreadBits(quantize(p.y, low.y, high.y)) << 1) |
+               (SpreadBits(quantize(p.z, low.z, high.z)) << 2);
+    order[r] = static_cast<uint32_t>(r);
+  }
+  // Stable LSD radix sort, three passes of 10 bits.
+  for (int shift = 0; shift < 30; shift += 10) {
+    std::vector<uint32_t> starts(1025, 0);
+    for (size_t i = 0; i < runCount; ++i) ++starts[((codes[i] >> shift) & 1023U) + 1];
+    for (size_t b = 1; b < starts.size(); ++b) starts[b] += starts[b - 1];
+    for (size_t i = 0; i < runCount; ++i) {
+      const uint32_t slot = starts[(codes[i] >> shift) & 1023U]++;
+      codesOut[slot] = codes[i];
+      orderOut[slot] = order[i];
+    }
+    codes.swap(codesOut);
+    order.swap(orderOut);
+  }
+  std::vector<uint32_t> triangles;
+  triangles.reserve(count);
+  for (const uint32_t r : order) {
+    for (size_t t = r * kRunTriangles; t < std::min(count, (r + 1) * kRunTriangles); ++t) {
+      triangles.push_back(static_cast<uint32_t>(t));
+    }
+  }
+  return triangles;
+}
+
 }  // namespace
 
 SceneClusters BuildClusters(const Scene& scene) {
   SceneClusters out;
   const size_t triangleCount = scene.triangles.size();
+  out.sceneOrder = triangleCount < SceneClusters::kSpatialFromTriangles;
+  if (out.sceneOrder) {
+    out.triangles.resize(triangleCount);
+    for (size_t t = 0; t < triangleCount; ++t) out.triangles[t] = static_cast<uint32_t>(t);
+  } else {
+    out.triangles = MortonOrder(scene);
+  }
   out.clusters.reserve(triangleCount / SceneClusters::kMaxTriangles + 1);
   for (size_t t = 0; t < triangleCount; t += SceneClusters::kMaxTriangles) {
     SceneCluster c;
-    c.firstTriangle = static_cast<uint32_t>(t);
-    c.triangleEnd =
-        static_cast<uint32_t>(std::min(triangleCount, t + SceneClusters::kMaxTriangles));
-    FitSphere(scene, c);
-    FitCone(scene, c);
+    c.first = static_cast<uint32_t>(t);
+    c.end = static_cast<uint32_t>(std::min(triangleCount, t + SceneClusters::kMaxTriangles));
+    std::sort(out.triangles.begin() + c.first, out.triangles.begin() + c.end);
+    const std::span<const uint32_t> members = out.Of(c);
+    FitSphere(scene, members, c);
+    FitCone(scene, members, c);
     out.clusters.push_back(c);
   }
   return out;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/Vec3.h"
@@ -9,12 +10,12 @@ namespace termshade {
 
 struct Scene;
 
-/// A run of consecutive scene triangles (scene order kept) with a bounding
-/// sphere and a normal cone, so a frame can skip the whole run before any
-/// per-triangle work when it faces away or covers no sample.
+/// Up to 64 scene triangles, indices ascending, with a bounding sphere and a
+/// normal cone, so a frame can skip the whole group before any per-triangle
+/// work when it faces away or covers no sample.
 struct SceneCluster {
-  uint32_t firstTriangle = 0;  ///< into Scene::triangles
-  uint32_t triangleEnd = 0;
+  uint32_t first = 0;  ///< into SceneClusters::triangles
+  uint32_t end = 0;
   Vec3 centerWorld;  ///< bounding sphere of the triangles' corners
   double radius = 0.0;
   /// Normal cone of its faces' planes: every unit normal n has n . axis >= coneCos
@@ -30,10 +31,21 @@ struct SceneCluster {
 /// The clusters of a scene, built once at preparation.
 struct SceneClusters {
   static constexpr uint32_t kMaxTriangles = 64;
+  /// From this many triangles clusters are spatial (Morton order of the
+  /// triangles' centroids); below, runs in scene order.
+  static constexpr size_t kSpatialFromTriangles = 20000;
   std::vector<SceneCluster> clusters;
+  std::vector<uint32_t> triangles;  ///< into Scene::triangles, cluster by cluster
+  bool sceneOrder = true;  ///< triangles is 0, 1, 2, ...: the clusters keep the scene order
+
+  /// A cluster's triangles (Scene::triangles indices), ascending.
+  std::span<const uint32_t> Of(const SceneCluster& c) const {
+    return std::span<const uint32_t>(triangles).subspan(c.first, c.end - c.first);
+  }
 };
 
-/// Groups the scene's triangles, in order, into runs of kMaxTriangles.
+/// Groups the scene's triangles into clusters of up to kMaxTriangles: runs in
+/// scene order for small scenes, neighbours along a Morton curve for big ones.
 SceneClusters BuildClusters(const Scene& scene);
 
 /// Which way a cluster's faces turn as seen from a point: conservative, so

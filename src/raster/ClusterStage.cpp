@@ -97,8 +97,8 @@ size_t ClipToRaster(const Scene& scene, const ClusterFrame& frame, uint32_t tria
 }
 
 // One cluster's triangles in order, each that may cover a sample handed to
-// emit(a, b, c, faceNumber) (a clipped one as its fan). allFront: the cone
-// showed every face front-facing. Returns the triangles counted as drawn.
+// emit(a, b, c, faceNumber, triangle) (a clipped one as its fan). allFront:
+// the cone showed every face front-facing. Returns the triangles counted as drawn.
 template <typename Emit>
 int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterFrame& frame,
                  bool allFront, const RasterVertex* raster, const uint8_t* codes, int width,
@@ -108,7 +108,7 @@ int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterF
   int drawn = 0;
   uint32_t lastFace = UINT32_MAX;
   bool front = true;
-  for (uint32_t t = cluster.firstTriangle; t < cluster.triangleEnd; ++t) {
+  for (const uint32_t t : scene.clusters.Of(cluster)) {
     const uint32_t face = triangles[t].face;
     if (!allFront && face != lastFace) {
       lastFace = face;
@@ -121,7 +121,7 @@ int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterF
       std::array<RasterVertex, 10> polygon{};
       const size_t count = ClipToRaster(scene, frame, t, polygon);
       if (count < 3) continue;
-      for (size_t i = 1; i + 1 < count; ++i) emit(polygon[0], polygon[i], polygon[i + 1], face + 1);
+      for (size_t i = 1; i + 1 < count; ++i) emit(polygon[0], polygon[i], polygon[i + 1], face + 1, t);
       ++drawn;
       continue;
     }
@@ -129,7 +129,7 @@ int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterF
     const RasterVertex& b = raster[v[1]];
     const RasterVertex& c = raster[v[2]];
     if (!MayCoverSample(a, b, c, width, height)) continue;
-    emit(a, b, c, face + 1);
+    emit(a, b, c, face + 1, t);
     ++drawn;
   }
   return drawn;
@@ -143,13 +143,41 @@ void ProjectRange(const Scene& scene, const ClusterFrame& frame, size_t first, s
                   {raster + first, codes + first, nullptr});
 }
 
+// Spatial clusters read runs scattered through memory: start loading the
+// triangles of the cluster after next and the face planes of the next one.
+void PrefetchAhead(const Scene& scene, const std::vector<SceneCluster>& clusters, size_t k) {
+  if (scene.clusters.sceneOrder) return;
+  if (k + 2 < clusters.size()) {
+    const std::span<const uint32_t> later = scene.clusters.Of(clusters[k + 2]);
+    for (size_t i = 0; i < later.size(); i += 4) __builtin_prefetch(&scene.triangles[later[i]]);
+  }
+  if (k + 1 < clusters.size()) {
+    const std::span<const uint32_t> next = scene.clusters.Of(clusters[k + 1]);
+    for (size_t i = 0; i < next.size(); i += 2) {
+      __builtin_prefetch(&scene.facePlanesWorld[scene.triangles[next[i]].face]);
+    }
+  }
+}
+
+// Draw order decides a sample only where a later triangle overwrites
+// (kOverwrite, kCoverOnly); spatial clusters then go back to scene order.
+bool NeedsSceneOrder(const Scene& scene, const ClusterFrame& frame) {
+  return !scene.clusters.sceneOrder && frame.rule != DepthRule::kNearestWins;
+}
+
+// Scene order; a clipped triangle's fan keeps its own order.
+void SortBySceneOrder(std::vector<ClusterStage::Binned>& binned) {
+  std::stable_sort(binned.begin(), binned.end(),
+                   [](const auto& x, const auto& y) { return x.triangle < y.triangle; });
+}
+
 }  // namespace
 
 bool ClusterStage::Usable(const Scene& scene) {
   const auto& clusters = scene.clusters.clusters;
   if (scene.triangles.empty()) return clusters.empty();
-  return !clusters.empty() && clusters.front().firstTriangle == 0 &&
-         clusters.back().triangleEnd == scene.triangles.size();
+  return !clusters.empty() && scene.clusters.triangles.size() == scene.triangles.size() &&
+         clusters.front().first == 0 && clusters.back().end == scene.triangles.size();
 }
 
 int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int threads,
@@ -163,18 +191,37 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
   ProjectRange(scene, frame, 0, raster_.size(), raster_.data(), codes_.data());
   int drawn = 0;
   auto rasterize = [&](const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
-                       uint32_t faceNumber) {
+                       uint32_t faceNumber, uint32_t) {
     if (frame.scanline) {
       RasterizeTriangleScanline(a, b, c, faceNumber, frame.rule, depth, cells);
     } else {
       RasterizeTriangle(a, b, c, faceNumber, frame.rule, depth, cells, frame.depthEncoding);
     }
   };
-  for (const SceneCluster& cluster : scene.clusters.clusters) {
+  const bool ordered = NeedsSceneOrder(scene, frame);
+  if (ordered_.empty()) ordered_.resize(1);
+  std::vector<Binned>& held = ordered_.front();
+  held.clear();
+  auto hold = [&](const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                  uint32_t faceNumber, uint32_t triangle) {
+    held.push_back({a, b, c, faceNumber, triangle});
+  };
+  clustersSetUp_ = 0;
+  const auto& clusters = scene.clusters.clusters;
+  for (size_t k = 0; k < clusters.size(); ++k) {
+    const SceneCluster& cluster = clusters[k];
     bool allFront = false;
     if (!ClusterMayShow(cluster, frame, width, height, allFront)) continue;
-    drawn += SetUpCluster(scene, cluster, frame, allFront, raster_.data(), codes_.data(), width,
-                          height, rasterize);
+    PrefetchAhead(scene, clusters, k);
+    ++clustersSetUp_;
+    drawn += ordered ? SetUpCluster(scene, cluster, frame, allFront, raster_.data(),
+                                    codes_.data(), width, height, hold)
+                     : SetUpCluster(scene, cluster, frame, allFront, raster_.data(),
+                                    codes_.data(), width, height, rasterize);
+  }
+  if (ordered) {
+    SortBySceneOrder(held);
+    for (const Binned& t : held) rasterize(t.a, t.b, t.c, t.faceNumber, t.triangle);
   }
   return drawn;
 }
@@ -193,6 +240,8 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
   bins_.resize(static_cast<size_t>(runs) * bands);
   for (auto& bin : bins_) bin.clear();
   drawnPerRun_.assign(runs, 0);
+  setUpPerRun_.assign(runs, 0);
+  ordered_.resize(bands);
 
   // Step 1: the vertices, a range per thread.
   auto project = [&](int worker) {
@@ -209,20 +258,22 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
       const size_t first = clusters.size() * run / runs, end = clusters.size() * (run + 1) / runs;
       std::vector<Binned>* const runBins = bins_.data() + static_cast<size_t>(run) * bands;
       auto bin = [&](const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
-                     uint32_t faceNumber) {
+                     uint32_t faceNumber, uint32_t triangle) {
         const int32_t minY = std::min(a.y, std::min(b.y, c.y));
         const int32_t maxY = std::max(a.y, std::max(b.y, c.y));
         const int firstRow = std::max(0, (minY + kFixedHalf - 1) >> kSubCellBits);
         const int lastRow = std::min(height - 1, (maxY - kFixedHalf) >> kSubCellBits);
         for (int band = firstRow / rowsPerBand;
              band <= lastRow / rowsPerBand && firstRow <= lastRow; ++band) {
-          runBins[band].push_back({a, b, c, faceNumber});
+          runBins[band].push_back({a, b, c, faceNumber, triangle});
         }
       };
       int drawn = 0;
       for (size_t k = first; k < end; ++k) {
         bool allFront = false;
         if (!ClusterMayShow(clusters[k], frame, width, height, allFront)) continue;
+        PrefetchAhead(scene, clusters, k);
+        ++setUpPerRun_[run];
         drawn += SetUpCluster(scene, clusters[k], frame, allFront, raster_.data(), codes_.data(),
                               width, height, bin);
       }
@@ -231,22 +282,36 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
   };
   pool_->Run(setUp);
 
-  // Step 3: each band drawn by one thread, the runs in scene order.
+  // Step 3: each band drawn by one thread, the runs in order (back in
+  // scene order where the rule needs it).
+  const bool ordered = NeedsSceneOrder(scene, frame);
   nextTask_ = 0;
   auto drawBands = [&](int) {
     for (int band = nextTask_++; band < bands; band = nextTask_++) {
       const RowRange rows{band * rowsPerBand, std::min(height, (band + 1) * rowsPerBand)};
+      auto draw = [&](const Binned& t) {
+        RasterizeTriangle(t.a, t.b, t.c, t.faceNumber, frame.rule, depth, cells,
+                          frame.depthEncoding, rows);
+      };
+      std::vector<Binned>& held = ordered_[band];
+      held.clear();
       for (int run = 0; run < runs; ++run) {
-        for (const Binned& t : bins_[static_cast<size_t>(run) * bands + band]) {
-          RasterizeTriangle(t.a, t.b, t.c, t.faceNumber, frame.rule, depth, cells,
-                            frame.depthEncoding, rows);
+        const std::vector<Binned>& bin = bins_[static_cast<size_t>(run) * bands + band];
+        if (ordered) {
+          held.insert(held.end(), bin.begin(), bin.end());
+        } else {
+          for (const Binned& t : bin) draw(t);
         }
       }
+      SortBySceneOrder(held);
+      for (const Binned& t : held) draw(t);
     }
   };
   pool_->Run(drawBands);
   int drawn = 0;
   for (int d : drawnPerRun_) drawn += d;
+  clustersSetUp_ = 0;
+  for (int s : setUpPerRun_) clustersSetUp_ += s;
   return drawn;
 }
 
