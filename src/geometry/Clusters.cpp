@@ -151,12 +151,30 @@ SceneClusters BuildClusters(const Scene& scene) {
     out.triangles = MortonOrder(scene);
   }
   out.clusters.reserve(triangleCount / SceneClusters::kMaxTriangles + 1);
+  out.corners.resize(triangleCount);
+  out.faces.resize(triangleCount);
+  std::vector<uint32_t> local(scene.verticesWorld.size(), UINT32_MAX);
   for (size_t t = 0; t < triangleCount; t += SceneClusters::kMaxTriangles) {
     SceneCluster c;
     c.first = static_cast<uint32_t>(t);
     c.end = static_cast<uint32_t>(std::min(triangleCount, t + SceneClusters::kMaxTriangles));
     std::sort(out.triangles.begin() + c.first, out.triangles.begin() + c.end);
     const std::span<const uint32_t> members = out.Of(c);
+    // Its distinct vertices, and each corner as an index among them.
+    c.vertexFirst = static_cast<uint32_t>(out.vertices.size());
+    for (uint32_t i = c.first; i < c.end; ++i) {
+      out.faces[i] = scene.triangles[out.triangles[i]].face;
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t v = scene.triangles[out.triangles[i]].vertices[k];
+        if (local[v] == UINT32_MAX) {
+          local[v] = static_cast<uint32_t>(out.vertices.size()) - c.vertexFirst;
+          out.vertices.push_back(v);
+        }
+        out.corners[i][k] = static_cast<uint8_t>(local[v]);
+      }
+    }
+    c.vertexEnd = static_cast<uint32_t>(out.vertices.size());
+    for (uint32_t i = c.vertexFirst; i < c.vertexEnd; ++i) local[out.vertices[i]] = UINT32_MAX;
     FitSphere(scene, members, c);
     FitCone(scene, members, c);
     out.clusters.push_back(c);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -14,8 +15,10 @@ struct Scene;
 /// normal cone, so a frame can skip the whole group before any per-triangle
 /// work when it faces away or covers no sample.
 struct SceneCluster {
-  uint32_t first = 0;  ///< into SceneClusters::triangles
+  uint32_t first = 0;  ///< into SceneClusters::triangles and corners
   uint32_t end = 0;
+  uint32_t vertexFirst = 0;  ///< into SceneClusters::vertices
+  uint32_t vertexEnd = 0;
   Vec3 centerWorld;  ///< bounding sphere of the triangles' corners
   double radius = 0.0;
   /// Normal cone of its faces' planes: every unit normal n has n . axis >= coneCos
@@ -36,6 +39,10 @@ struct SceneClusters {
   static constexpr size_t kSpatialFromTriangles = 20000;
   std::vector<SceneCluster> clusters;
   std::vector<uint32_t> triangles;  ///< into Scene::triangles, cluster by cluster
+  /// Per entry of triangles: its corners as indices into its cluster's vertices.
+  std::vector<std::array<uint8_t, 3>> corners;
+  std::vector<uint32_t> faces;  ///< per entry of triangles: its face (read in order)
+  std::vector<uint32_t> vertices;  ///< each cluster's distinct vertices (Scene::verticesWorld)
   bool sceneOrder = true;  ///< triangles is 0, 1, 2, ...: the clusters keep the scene order
 
   /// A cluster's triangles (Scene::triangles indices), ascending.

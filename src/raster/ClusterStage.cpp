@@ -99,29 +99,56 @@ size_t ClipToRaster(const Scene& scene, const ClusterFrame& frame, uint32_t tria
 // One cluster's triangles in order, each that may cover a sample handed to
 // emit(a, b, c, faceNumber, triangle) (a clipped one as its fan). allFront:
 // the cone showed every face front-facing. Returns the triangles counted as drawn.
+// A cluster's distinct vertices, transformed and projected.
+struct ClusterVertices {
+  static constexpr size_t kMax = 3 * SceneClusters::kMaxTriangles;
+  std::array<Vec3, kMax> world;
+  std::array<RasterVertex, kMax> raster;
+  std::array<uint8_t, kMax> codes;
+};
+
+void ProjectCluster(const Scene& scene, const SceneCluster& cluster, const ClusterFrame& frame,
+                    ClusterVertices& out) {
+  const uint32_t* const vertices = scene.clusters.vertices.data();
+  const size_t count = cluster.vertexEnd - cluster.vertexFirst;
+  for (size_t i = 0; i < count; ++i) {
+    out.world[i] = scene.verticesWorld[vertices[cluster.vertexFirst + i]];
+  }
+  ProjectVertices(std::span<const Vec3>(out.world.data(), count), frame.eyeFromWorld,
+                  frame.projection, frame.clipPlanes, frame.floatGeometry,
+                  {out.raster.data(), out.codes.data(), nullptr});
+}
+
 template <typename Emit>
 int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterFrame& frame,
-                 bool allFront, const RasterVertex* raster, const uint8_t* codes, int width,
-                 int height, Emit&& emit) {
-  const SceneTriangle* const triangles = scene.triangles.data();
+                 bool allFront, ClusterVertices& local, int width, int height, Emit&& emit) {
+  ProjectCluster(scene, cluster, frame, local);
+  const uint32_t* const faces = scene.clusters.faces.data();
   const FacePlane* const planes = scene.facePlanesWorld.data();
+  const uint32_t* const order = scene.clusters.triangles.data();
+  const std::array<uint8_t, 3>* const corners = scene.clusters.corners.data();
+  const RasterVertex* const raster = local.raster.data();
+  const uint8_t* const codes = local.codes.data();
   int drawn = 0;
   uint32_t lastFace = UINT32_MAX;
   bool front = true;
-  for (const uint32_t t : scene.clusters.Of(cluster)) {
-    const uint32_t face = triangles[t].face;
+  for (uint32_t i = cluster.first; i < cluster.end; ++i) {
+    const uint32_t t = order[i];
+    const uint32_t face = faces[i];
     if (!allFront && face != lastFace) {
       lastFace = face;
       front = planes[face].FacesPoint(frame.eyeWorld);
     }
     if (!front) continue;
-    const auto& v = triangles[t].vertices;
+    const auto& v = corners[i];
     if ((codes[v[0]] | codes[v[1]] | codes[v[2]]) != 0) {
       if ((codes[v[0]] & codes[v[1]] & codes[v[2]]) != 0) continue;
       std::array<RasterVertex, 10> polygon{};
       const size_t count = ClipToRaster(scene, frame, t, polygon);
       if (count < 3) continue;
-      for (size_t i = 1; i + 1 < count; ++i) emit(polygon[0], polygon[i], polygon[i + 1], face + 1, t);
+      for (size_t j = 1; j + 1 < count; ++j) {
+        emit(polygon[0], polygon[j], polygon[j + 1], face + 1, t);
+      }
       ++drawn;
       continue;
     }
@@ -133,30 +160,6 @@ int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterF
     ++drawn;
   }
   return drawn;
-}
-
-// Vertices [first, end) transformed and projected into raster and codes.
-void ProjectRange(const Scene& scene, const ClusterFrame& frame, size_t first, size_t end,
-                  RasterVertex* raster, uint8_t* codes) {
-  ProjectVertices(std::span<const Vec3>(scene.verticesWorld).subspan(first, end - first),
-                  frame.eyeFromWorld, frame.projection, frame.clipPlanes, frame.floatGeometry,
-                  {raster + first, codes + first, nullptr});
-}
-
-// Spatial clusters read runs scattered through memory: start loading the
-// triangles of the cluster after next and the face planes of the next one.
-void PrefetchAhead(const Scene& scene, const std::vector<SceneCluster>& clusters, size_t k) {
-  if (scene.clusters.sceneOrder) return;
-  if (k + 2 < clusters.size()) {
-    const std::span<const uint32_t> later = scene.clusters.Of(clusters[k + 2]);
-    for (size_t i = 0; i < later.size(); i += 4) __builtin_prefetch(&scene.triangles[later[i]]);
-  }
-  if (k + 1 < clusters.size()) {
-    const std::span<const uint32_t> next = scene.clusters.Of(clusters[k + 1]);
-    for (size_t i = 0; i < next.size(); i += 2) {
-      __builtin_prefetch(&scene.facePlanesWorld[scene.triangles[next[i]].face]);
-    }
-  }
 }
 
 // Draw order decides a sample only where a later triangle overwrites
@@ -186,9 +189,7 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
     return DrawThreaded(scene, frame, threads, depth, cells);
   }
   const int width = cells.WidthCells(), height = cells.HeightCells();
-  raster_.resize(scene.verticesWorld.size());
-  codes_.resize(scene.verticesWorld.size());
-  ProjectRange(scene, frame, 0, raster_.size(), raster_.data(), codes_.data());
+  ClusterVertices local;
   int drawn = 0;
   auto rasterize = [&](const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                        uint32_t faceNumber, uint32_t) {
@@ -212,12 +213,10 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
     const SceneCluster& cluster = clusters[k];
     bool allFront = false;
     if (!ClusterMayShow(cluster, frame, width, height, allFront)) continue;
-    PrefetchAhead(scene, clusters, k);
     ++clustersSetUp_;
-    drawn += ordered ? SetUpCluster(scene, cluster, frame, allFront, raster_.data(),
-                                    codes_.data(), width, height, hold)
-                     : SetUpCluster(scene, cluster, frame, allFront, raster_.data(),
-                                    codes_.data(), width, height, rasterize);
+    drawn += ordered ? SetUpCluster(scene, cluster, frame, allFront, local, width, height, hold)
+                     : SetUpCluster(scene, cluster, frame, allFront, local, width, height,
+                                    rasterize);
   }
   if (ordered) {
     SortBySceneOrder(held);
@@ -235,25 +234,16 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
   const int runs = static_cast<int>(std::min<size_t>(clusters.size(), size_t{16} * threads));
   const int bands = std::min(height, 4 * threads);
   const int rowsPerBand = (height + bands - 1) / bands;
-  raster_.resize(scene.verticesWorld.size());
-  codes_.resize(scene.verticesWorld.size());
   bins_.resize(static_cast<size_t>(runs) * bands);
   for (auto& bin : bins_) bin.clear();
   drawnPerRun_.assign(runs, 0);
   setUpPerRun_.assign(runs, 0);
   ordered_.resize(bands);
 
-  // Step 1: the vertices, a range per thread.
-  auto project = [&](int worker) {
-    const size_t count = raster_.size();
-    ProjectRange(scene, frame, count * worker / threads, count * (worker + 1) / threads,
-                 raster_.data(), codes_.data());
-  };
-  pool_->Run(project);
-
-  // Step 2: runs of clusters set up in parallel, triangles binned by row band.
+  // Step 1: runs of clusters set up in parallel, triangles binned by row band.
   nextTask_ = 0;
   auto setUp = [&](int) {
+    ClusterVertices local;
     for (int run = nextTask_++; run < runs; run = nextTask_++) {
       const size_t first = clusters.size() * run / runs, end = clusters.size() * (run + 1) / runs;
       std::vector<Binned>* const runBins = bins_.data() + static_cast<size_t>(run) * bands;
@@ -272,17 +262,15 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
       for (size_t k = first; k < end; ++k) {
         bool allFront = false;
         if (!ClusterMayShow(clusters[k], frame, width, height, allFront)) continue;
-        PrefetchAhead(scene, clusters, k);
-        ++setUpPerRun_[run];
-        drawn += SetUpCluster(scene, clusters[k], frame, allFront, raster_.data(), codes_.data(),
-                              width, height, bin);
+            ++setUpPerRun_[run];
+        drawn += SetUpCluster(scene, clusters[k], frame, allFront, local, width, height, bin);
       }
       drawnPerRun_[run] = drawn;
     }
   };
   pool_->Run(setUp);
 
-  // Step 3: each band drawn by one thread, the runs in order (back in
+  // Step 2: each band drawn by one thread, the runs in order (back in
   // scene order where the rule needs it).
   const bool ordered = NeedsSceneOrder(scene, frame);
   nextTask_ = 0;

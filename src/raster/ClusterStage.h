@@ -31,11 +31,11 @@ struct ClusterFrame {
   size_t threadsFromTriangles = 0;  ///< fewer triangles: one thread draws
 };
 
-/// The surface pass of zbuffer and cull: every vertex transformed, then the
-/// triangles cluster by cluster, whole clusters skipped when they face away
-/// or cover no sample. With several threads the vertices are split in
-/// ranges, runs of clusters are set up in parallel into per-(run, row band)
-/// bins, then each band is drawn by one thread walking the runs in order.
+/// The surface pass of zbuffer and cull: cluster by cluster, whole clusters
+/// skipped when they face away or cover no sample, the others' vertices
+/// transformed and their triangles set up. With several threads runs of
+/// clusters are set up in parallel into per-(run, row band) bins, then each
+/// band is drawn by one thread walking the runs in order.
 /// The nearest-wins rule breaks depth ties by face number, so its frame does
 /// not depend on the order; the overwriting rules draw spatial clusters'
 /// triangles sorted back into scene order. Either way the frame is bit for
@@ -64,8 +64,6 @@ class ClusterStage {
                    CellBuffer& cells);
 
   std::unique_ptr<WorkerPool> pool_;
-  std::vector<RasterVertex> raster_;  ///< per scene vertex, this frame
-  std::vector<uint8_t> codes_;
   std::vector<std::vector<Binned>> bins_;  ///< [run * bands + band]
   std::vector<std::vector<Binned>> ordered_;  ///< per band: its triangles in scene order
   std::vector<int> drawnPerRun_;
