@@ -41,9 +41,9 @@ struct SceneClusters {
   std::vector<uint32_t> triangles;  ///< into Scene::triangles, cluster by cluster
   /// Per entry of triangles: its corners as indices into its cluster's vertices.
   std::vector<std::array<uint8_t, 3>> corners;
-  std::vector<uint32_t> faces;  ///< per entry of triangles: its face (read in order)
+  std::vector<uint32_t> faces;     ///< per entry of triangles: its face (read in order)
   std::vector<uint32_t> vertices;  ///< each cluster's distinct vertices (Scene::verticesWorld)
-  bool sceneOrder = true;  ///< triangles is 0, 1, 2, ...: the clusters keep the scene order
+  bool sceneOrder = true;          ///< triangles is 0, 1, 2, ...: the clusters keep the scene order
 
   /// A cluster's triangles (Scene::triangles indices), ascending.
   std::span<const uint32_t> Of(const SceneCluster& c) const {

@@ -214,9 +214,9 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
     bool allFront = false;
     if (!ClusterMayShow(cluster, frame, width, height, allFront)) continue;
     ++clustersSetUp_;
-    drawn += ordered ? SetUpCluster(scene, cluster, frame, allFront, local, width, height, hold)
-                     : SetUpCluster(scene, cluster, frame, allFront, local, width, height,
-                                    rasterize);
+    drawn += ordered
+                 ? SetUpCluster(scene, cluster, frame, allFront, local, width, height, hold)
+                 : SetUpCluster(scene, cluster, frame, allFront, local, width, height, rasterize);
   }
   if (ordered) {
     SortBySceneOrder(held);
@@ -262,7 +262,7 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
       for (size_t k = first; k < end; ++k) {
         bool allFront = false;
         if (!ClusterMayShow(clusters[k], frame, width, height, allFront)) continue;
-            ++setUpPerRun_[run];
+        ++setUpPerRun_[run];
         drawn += SetUpCluster(scene, clusters[k], frame, allFront, local, width, height, bin);
       }
       drawnPerRun_[run] = drawn;

@@ -64,7 +64,7 @@ class ClusterStage {
                    CellBuffer& cells);
 
   std::unique_ptr<WorkerPool> pool_;
-  std::vector<std::vector<Binned>> bins_;  ///< [run * bands + band]
+  std::vector<std::vector<Binned>> bins_;     ///< [run * bands + band]
   std::vector<std::vector<Binned>> ordered_;  ///< per band: its triangles in scene order
   std::vector<int> drawnPerRun_;
   std::vector<int> setUpPerRun_;
