@@ -205,8 +205,8 @@ TEST(Clusters, ConeTestIsConservativeAndSkipsTheBackHalf) {
   }
 }
 
-// Small scenes: runs in scene order; big ones: every triangle once, each
-// cluster's indices ascending, inside its bounding sphere.
+// Small scenes: runs in scene order; big ones: every triangle once; each
+// triangle inside its cluster's bounding sphere and its group's.
 void ExpectEveryTriangleOnce(const Scene& scene, bool sceneOrder) {
   EXPECT_EQ(scene.clusters.sceneOrder, sceneOrder);
   ASSERT_EQ(scene.clusters.triangles.size(), scene.triangles.size());
@@ -222,12 +222,13 @@ void ExpectEveryTriangleOnce(const Scene& scene, bool sceneOrder) {
       if (sceneOrder) {
         EXPECT_EQ(t, next + i);
       }
-      if (i > 0) {
-        EXPECT_LT(members[i - 1], t);
-      }
       ++seen[t];
+      const ClusterGroup& group =
+          scene.clusters.groups[(cluster.first + i) / SceneClusters::kGroupTriangles];
+      const Vec3 groupCenter{group.center[0], group.center[1], group.center[2]};
       for (const uint32_t v : scene.triangles[t].vertices) {
         EXPECT_LE(Length(scene.verticesWorld[v] - cluster.centerWorld), cluster.radius);
+        EXPECT_LE(Length(scene.verticesWorld[v] - groupCenter), group.radius);
       }
     }
     next = cluster.end;

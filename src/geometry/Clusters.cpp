@@ -81,23 +81,16 @@ uint32_t SpreadBits(uint32_t x) {
   return x;
 }
 
-// Runs of this many consecutive triangles stay together: a cluster reads a
-// few runs of neighbouring memory rather than 64 scattered triangles.
-constexpr size_t kRunTriangles = 16;
-
-// The triangles ordered along a Morton curve of the centroids of their runs
-// (ties in scene order): neighbours on the surface come out close together.
+// The triangles ordered along a Morton curve of their centroids (ties in
+// scene order): neighbours on the surface come out close together.
 std::vector<uint32_t> MortonOrder(const Scene& scene) {
   const size_t count = scene.triangles.size();
-  const size_t runCount = (count + kRunTriangles - 1) / kRunTriangles;
-  std::vector<Vec3> centroids(runCount);
+  std::vector<Vec3> centroids(count);
   Vec3 low{INFINITY, INFINITY, INFINITY}, high = low * -1.0;
-  for (size_t r = 0; r < runCount; ++r) {
+  for (size_t t = 0; t < count; ++t) {
     Vec3 sum{};
-    for (size_t t = r * kRunTriangles; t < std::min(count, (r + 1) * kRunTriangles); ++t) {
-      for (const uint32_t v : scene.triangles[t].vertices) sum = sum + scene.verticesWorld[v];
-    }
-    centroids[r] = sum;
+    for (const uint32_t v : scene.triangles[t].vertices) sum = sum + scene.verticesWorld[v];
+    centroids[t] = sum;
     if (!IsFinite(sum)) continue;
     low = {std::min(low.x, sum.x), std::min(low.y, sum.y), std::min(low.z, sum.z)};
     high = {std::max(high.x, sum.x), std::max(high.y, sum.y), std::max(high.z, sum.z)};
@@ -107,20 +100,21 @@ std::vector<uint32_t> MortonOrder(const Scene& scene) {
     if (!(unit > 0.0)) return 0U;  // NaN too
     return static_cast<uint32_t>(std::min(1023.0, unit * 1024.0));
   };
-  std::vector<uint32_t> codes(runCount), order(runCount), codesOut(runCount), orderOut(runCount);
-  for (size_t r = 0; r < runCount; ++r) {
-    const Vec3 p = centroids[r];
-    codes[r] = SpreadBits(quantize(p.x, low.x, high.x)) |
+  std::vector<uint32_t> codes(count), order(count), codesOut(count), orderOut(count);
+  for (size_t t = 0; t < count; ++t) {
+    const Vec3 p = centroids[t];
+    codes[t] = SpreadBits(quantize(p.x, low.x, high.x)) |
                (SpreadBits(quantize(p.y, low.y, high.y)) << 1) |
                (SpreadBits(quantize(p.z, low.z, high.z)) << 2);
-    order[r] = static_cast<uint32_t>(r);
+    order[t] = static_cast<uint32_t>(t);
   }
+  centroids = {};
   // Stable LSD radix sort, three passes of 10 bits.
   for (int shift = 0; shift < 30; shift += 10) {
     std::vector<uint32_t> starts(1025, 0);
-    for (size_t i = 0; i < runCount; ++i) ++starts[((codes[i] >> shift) & 1023U) + 1];
+    for (size_t i = 0; i < count; ++i) ++starts[((codes[i] >> shift) & 1023U) + 1];
     for (size_t b = 1; b < starts.size(); ++b) starts[b] += starts[b - 1];
-    for (size_t i = 0; i < runCount; ++i) {
+    for (size_t i = 0; i < count; ++i) {
       const uint32_t slot = starts[(codes[i] >> shift) & 1023U]++;
       codesOut[slot] = codes[i];
       orderOut[slot] = order[i];
@@ -128,14 +122,65 @@ std::vector<uint32_t> MortonOrder(const Scene& scene) {
     codes.swap(codesOut);
     order.swap(orderOut);
   }
-  std::vector<uint32_t> triangles;
-  triangles.reserve(count);
-  for (const uint32_t r : order) {
-    for (size_t t = r * kRunTriangles; t < std::min(count, (r + 1) * kRunTriangles); ++t) {
-      triangles.push_back(static_cast<uint32_t>(t));
+  return order;
+}
+
+// A cluster's triangles [first, end) reordered so that each run of
+// kGroupTriangles is compact: halved at the median centroid along the
+// longest side of their box, recursively (the halves' sizes multiples of a group).
+void SplitIntoGroups(const Scene& scene, uint32_t* first, uint32_t* end) {
+  const size_t count = static_cast<size_t>(end - first);
+  if (count <= SceneClusters::kGroupTriangles) return;
+  auto centroid = [&](uint32_t t) {
+    const auto& v = scene.triangles[t].vertices;
+    return scene.verticesWorld[v[0]] + scene.verticesWorld[v[1]] + scene.verticesWorld[v[2]];
+  };
+  Vec3 low = centroid(*first), high = low;
+  for (const uint32_t* t = first; t != end; ++t) {
+    const Vec3 p = centroid(*t);
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+  }
+  const Vec3 size = high - low;
+  const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+  auto key = [&](uint32_t t) {
+    const Vec3 p = centroid(t);
+    return axis == 0 ? p.x : (axis == 1 ? p.y : p.z);
+  };
+  constexpr size_t kGroup = SceneClusters::kGroupTriangles;
+  uint32_t* const middle = first + kGroup * ((count + 2 * kGroup - 1) / (2 * kGroup));
+  // NaN after every number, ties by index: a strict order, the same split on every machine.
+  std::nth_element(first, middle, end, [&](uint32_t a, uint32_t b) {
+    const double ka = key(a), kb = key(b);
+    const bool nanA = std::isnan(ka), nanB = std::isnan(kb);
+    if (nanA != nanB) return nanB;
+    if (!nanA && ka != kb) return ka < kb;
+    return a < b;
+  });
+  SplitIntoGroups(scene, first, middle);
+  SplitIntoGroups(scene, middle, end);
+}
+
+// A group's sphere in float: the center rounded, the radius measured from
+// the rounded center in double and rounded up, so every corner is inside.
+ClusterGroup FitGroup(const Scene& scene, std::span<const uint32_t> members) {
+  SceneCluster sphere;
+  FitSphere(scene, members, sphere);
+  ClusterGroup g;
+  g.center[0] = static_cast<float>(sphere.centerWorld.x);
+  g.center[1] = static_cast<float>(sphere.centerWorld.y);
+  g.center[2] = static_cast<float>(sphere.centerWorld.z);
+  const Vec3 center{g.center[0], g.center[1], g.center[2]};
+  double radius = 0.0;
+  for (const uint32_t t : members) {
+    for (const uint32_t v : scene.triangles[t].vertices) {
+      radius = std::max(radius, Length(scene.verticesWorld[v] - center));
     }
   }
-  return triangles;
+  const double padded = radius * (1.0 + 1e-9) + 1e-30;
+  g.radius = static_cast<float>(padded);
+  if (static_cast<double>(g.radius) < padded) g.radius = std::nextafter(g.radius, INFINITY);
+  return g;
 }
 
 }  // namespace
@@ -151,32 +196,41 @@ SceneClusters BuildClusters(const Scene& scene) {
     out.triangles = MortonOrder(scene);
   }
   out.clusters.reserve(triangleCount / SceneClusters::kMaxTriangles + 1);
+  out.groups.reserve(triangleCount / SceneClusters::kGroupTriangles + 1);
   out.corners.resize(triangleCount);
-  out.faces.resize(triangleCount);
   std::vector<uint32_t> local(scene.verticesWorld.size(), UINT32_MAX);
+  std::vector<uint32_t> distinct;
   for (size_t t = 0; t < triangleCount; t += SceneClusters::kMaxTriangles) {
     SceneCluster c;
     c.first = static_cast<uint32_t>(t);
     c.end = static_cast<uint32_t>(std::min(triangleCount, t + SceneClusters::kMaxTriangles));
-    std::sort(out.triangles.begin() + c.first, out.triangles.begin() + c.end);
+    if (!out.sceneOrder) {
+      SplitIntoGroups(scene, out.triangles.data() + c.first, out.triangles.data() + c.end);
+    }
     const std::span<const uint32_t> members = out.Of(c);
     // Its distinct vertices, and each corner as an index among them.
-    c.vertexFirst = static_cast<uint32_t>(out.vertices.size());
+    c.vertexFirst = static_cast<uint32_t>(out.positions.size());
+    distinct.clear();
     for (uint32_t i = c.first; i < c.end; ++i) {
-      out.faces[i] = scene.triangles[out.triangles[i]].face;
       for (int k = 0; k < 3; ++k) {
         const uint32_t v = scene.triangles[out.triangles[i]].vertices[k];
         if (local[v] == UINT32_MAX) {
-          local[v] = static_cast<uint32_t>(out.vertices.size()) - c.vertexFirst;
-          out.vertices.push_back(v);
+          local[v] = static_cast<uint32_t>(distinct.size());
+          distinct.push_back(v);
+          out.positions.push_back(scene.verticesWorld[v]);
         }
         out.corners[i][k] = static_cast<uint8_t>(local[v]);
       }
     }
-    c.vertexEnd = static_cast<uint32_t>(out.vertices.size());
-    for (uint32_t i = c.vertexFirst; i < c.vertexEnd; ++i) local[out.vertices[i]] = UINT32_MAX;
+    c.vertexEnd = static_cast<uint32_t>(out.positions.size());
+    for (const uint32_t v : distinct) local[v] = UINT32_MAX;
     FitSphere(scene, members, c);
     FitCone(scene, members, c);
+    for (size_t g = 0; g < members.size(); g += SceneClusters::kGroupTriangles) {
+      out.groups.push_back(FitGroup(
+          scene, members.subspan(g, std::min<size_t>(SceneClusters::kGroupTriangles,
+                                                     members.size() - g))));
+    }
     out.clusters.push_back(c);
   }
   return out;

@@ -13,56 +13,105 @@ namespace termshade {
 namespace {
 
 // Sample columns (or rows) whose centers k + 0.5 lie in [low, high], clipped to [0, limit).
+// Callers keep |low|, |high| within the guard band: the casts are exact ceil and floor.
 bool HoldsSample(double low, double high, int limit) {
-  const double first = std::max(0.0, std::ceil(low - 0.5));
-  const double last = std::min(limit - 1.0, std::floor(high - 0.5));
+  const double x = low - 0.5, y = high - 0.5;
+  const auto tx = static_cast<int32_t>(x), ty = static_cast<int32_t>(y);
+  const int32_t first = std::max(0, tx + static_cast<int32_t>(tx < x));
+  const int32_t last = std::min(limit - 1, ty - static_cast<int32_t>(ty > y));
   return first <= last;
 }
 
+// What a bounding sphere's projection shows: no cell-center sample, maybe
+// one, or nothing known (not every point of it takes the direct path).
+enum class SphereOnScreen { kNoSample, kMayCover, kUnknown };
+
+// The per-frame constants of the sphere tests (clusters and groups).
+struct SphereTest {
+  Mat4 eyeFromWorld;
+  std::array<double, std::tuple_size_v<ViewClipPlanes>> planeLengths{};  ///< |normal| of each clip plane
+  double nearZ, d, vScale, cx, cy, xLimit, yLimit;
+  int width, height;
+
+  SphereTest(const ClusterFrame& frame, int widthCells, int heightCells)
+      : eyeFromWorld(frame.eyeFromWorld),
+        nearZ(2.0 * -frame.clipPlanes[0].offset),
+        d(frame.projection.d),
+        vScale(frame.projection.d / frame.projection.cellAspect),
+        cx(frame.projection.cx),
+        cy(frame.projection.cy),
+        xLimit(0.5 * (kClipRangeCells - frame.projection.cx) * (1.0 - 1e-9)),
+        yLimit(0.5 * (kClipRangeCells - frame.projection.cy) * (1.0 - 1e-9)),
+        width(widthCells),
+        height(heightCells) {
+    for (size_t i = 0; i < planeLengths.size(); ++i) {
+      planeLengths[i] = Length(frame.clipPlanes[i].normal);
+    }
+  }
+
+  // c: the center in eye space. Every vertex inside takes the vertex stage's
+  // direct path (VertexStage.cpp) when the sphere lies twice the near
+  // distance in front and within half the guard band across; then its
+  // snapped position lies in the projected box (0.01 cell margin).
+  SphereOnScreen Project(Vec3 c, double r) const {
+    // |x| + |y| + |z| >= |c|: a margin at least the one of the cluster test.
+    const double margin = 1e-9 * (std::fabs(c.x) + std::fabs(c.y) + std::fabs(c.z) + r);
+    const double depthNear = -c.z - r, depthFar = -c.z + r;
+    if (!(depthNear > nearZ * (1.0 + 1e-9) + margin)) return SphereOnScreen::kUnknown;
+    // Products with the reciprocals round differently from the quotients by
+    // far less than the screen margin.
+    const double inverseNear = 1.0 / depthNear, inverseFar = 1.0 / depthFar;
+    auto range = [&](double center, double& low, double& high) {
+      const double lo = center - r, hi = center + r;
+      high = hi * (hi > 0.0 ? inverseNear : inverseFar);
+      low = lo * (lo < 0.0 ? inverseNear : inverseFar);
+    };
+    double xLow = 0, xHigh = 0, yLow = 0, yHigh = 0;
+    range(c.x, xLow, xHigh);
+    range(c.y, yLow, yHigh);
+    if (!(std::max(-xLow, xHigh) * d <= xLimit && std::max(-yLow, yHigh) * vScale <= yLimit)) {
+      return SphereOnScreen::kUnknown;
+    }
+    constexpr double kScreenMargin = 0.01;
+    return HoldsSample(cx + d * xLow - kScreenMargin, cx + d * xHigh + kScreenMargin, width) &&
+                   HoldsSample(cy - vScale * yHigh - kScreenMargin,
+                               cy - vScale * yLow + kScreenMargin, height)
+               ? SphereOnScreen::kMayCover
+               : SphereOnScreen::kNoSample;
+  }
+
+  // A group of a cluster whose sphere projected on the direct path.
+  bool GroupMayCover(const ClusterGroup& group) const {
+    const Vec3 center{group.center[0], group.center[1], group.center[2]};
+    return Project(TransformPoint(eyeFromWorld, center), group.radius) !=
+           SphereOnScreen::kNoSample;
+  }
+};
+
 // False when no vertex of the cluster can give a triangle a sample to
 // cover: its bounding sphere lies wholly outside one clip plane (every
-// triangle then has a shared out-code bit), or lies where every vertex is
-// projected directly and its projected box holds no cell-center sample.
-// Margins cover rounding: 1e-9 relative, 0.01 cell on the screen.
-bool SphereMayCover(const SceneCluster& cluster, const ClusterFrame& frame, int width, int height) {
+// triangle then has a shared out-code bit), or its projection holds no
+// cell-center sample. Margins cover rounding: 1e-9 relative.
+SphereOnScreen ClusterOnScreen(const SceneCluster& cluster, const ClusterFrame& frame,
+                               const SphereTest& test) {
   const Vec3 c = TransformPoint(frame.eyeFromWorld, cluster.centerWorld);
   const double r = cluster.radius;
   const double margin = 1e-9 * (Length(c) + r);
-  for (const ClipPlane& plane : frame.clipPlanes) {
-    if (plane.Distance(c) < -r * Length(plane.normal) - margin * (1.0 + Length(plane.normal))) {
-      return false;
+  for (size_t i = 0; i < frame.clipPlanes.size(); ++i) {
+    const double length = test.planeLengths[i];
+    if (frame.clipPlanes[i].Distance(c) < -r * length - margin * (1.0 + length)) {
+      return SphereOnScreen::kNoSample;
     }
   }
-  // Every vertex takes the vertex stage's direct path (VertexStage.cpp):
-  // twice the near distance in front, half the guard band across.
-  const Projection& proj = frame.projection;
-  const double nearZ = 2.0 * -frame.clipPlanes[0].offset;
-  const double depthNear = -c.z - r, depthFar = -c.z + r;
-  if (!(depthNear > nearZ * (1.0 + 1e-9) + margin)) return true;
-  auto range = [&](double center, double& low, double& high) {
-    const double lo = center - r, hi = center + r;
-    high = hi > 0.0 ? hi / depthNear : hi / depthFar;
-    low = lo < 0.0 ? lo / depthNear : lo / depthFar;
-  };
-  double xLow = 0, xHigh = 0, yLow = 0, yHigh = 0;
-  range(c.x, xLow, xHigh);
-  range(c.y, yLow, yHigh);
-  const double vScale = proj.d / proj.cellAspect;
-  const double xLimit = 0.5 * (kClipRangeCells - proj.cx) * (1.0 - 1e-9);
-  const double yLimit = 0.5 * (kClipRangeCells - proj.cy) * (1.0 - 1e-9);
-  if (std::max(-xLow, xHigh) * proj.d > xLimit || std::max(-yLow, yHigh) * vScale > yLimit) {
-    return true;
-  }
-  constexpr double kScreenMargin = 0.01;
-  return HoldsSample(proj.cx + proj.d * xLow - kScreenMargin,
-                     proj.cx + proj.d * xHigh + kScreenMargin, width) &&
-         HoldsSample(proj.cy - vScale * yHigh - kScreenMargin,
-                     proj.cy - vScale * yLow + kScreenMargin, height);
+  return test.Project(c, r);
 }
 
-bool ClusterMayShow(const SceneCluster& cluster, const ClusterFrame& frame, int width, int height,
-                    bool& allFront) {
+// Whether the cluster may show; allFront: the cone showed every face
+// front-facing; testGroups: its groups' spheres may be tested too.
+bool ClusterMayShow(const SceneCluster& cluster, const ClusterFrame& frame,
+                    const SphereTest& test, bool& allFront, bool& testGroups) {
   allFront = !frame.cullBackFaces;
+  testGroups = false;
   if (!frame.clusterCulling) return true;
   if (frame.cullBackFaces) {
     const ClusterFacing facing = FacingOf(cluster, frame.eyeWorld);
@@ -70,7 +119,10 @@ bool ClusterMayShow(const SceneCluster& cluster, const ClusterFrame& frame, int 
     allFront = facing == ClusterFacing::kToward;
   }
   // Float geometry rounds beyond the sphere test's margins: faces only.
-  return frame.floatGeometry || SphereMayCover(cluster, frame, width, height);
+  if (frame.floatGeometry) return true;
+  const SphereOnScreen shown = ClusterOnScreen(cluster, frame, test);
+  testGroups = shown == SphereOnScreen::kMayCover;
+  return shown != SphereOnScreen::kNoSample;
 }
 
 RasterVertex ToRaster(const CellPoint& p) {
@@ -96,68 +148,94 @@ size_t ClipToRaster(const Scene& scene, const ClusterFrame& frame, uint32_t tria
   return clipped.count;
 }
 
-// One cluster's triangles in order, each that may cover a sample handed to
-// emit(a, b, c, faceNumber, triangle) (a clipped one as its fan). allFront:
-// the cone showed every face front-facing. Returns the triangles counted as drawn.
-// A cluster's distinct vertices, transformed and projected.
+// A cluster's distinct vertices, projected when a triangle first needs them.
 struct ClusterVertices {
   static constexpr size_t kMax = 3 * SceneClusters::kMaxTriangles;
-  std::array<Vec3, kMax> world;
   std::array<RasterVertex, kMax> raster;
   std::array<uint8_t, kMax> codes;
+  std::array<uint32_t, kMax> stamp{};  ///< == current: projected for this cluster
+  uint32_t current = 0;
+
+  void NextCluster() {
+    if (++current == 0) {
+      stamp.fill(0);
+      current = 1;
+    }
+  }
 };
 
-void ProjectCluster(const Scene& scene, const SceneCluster& cluster, const ClusterFrame& frame,
-                    ClusterVertices& out) {
-  const uint32_t* const vertices = scene.clusters.vertices.data();
-  const size_t count = cluster.vertexEnd - cluster.vertexFirst;
-  for (size_t i = 0; i < count; ++i) {
-    out.world[i] = scene.verticesWorld[vertices[cluster.vertexFirst + i]];
-  }
-  ProjectVertices(std::span<const Vec3>(out.world.data(), count), frame.eyeFromWorld,
-                  frame.projection, frame.clipPlanes, frame.floatGeometry,
-                  {out.raster.data(), out.codes.data(), nullptr});
-}
+// The per-frame inputs of SetUpCluster.
+struct SetUpContext {
+  const Scene& scene;
+  const ClusterFrame& frame;
+  const SphereTest& spheres;
+  const VertexProjector& projector;
+  ClusterVertices& local;
+};
 
+// One cluster's triangles, each that may cover a sample handed to
+// emit(a, b, c, faceNumber, triangle) (a clipped one as its fan); groups whose
+// sphere holds no sample are skipped (testGroups). allFront: the cone showed
+// every face front-facing. Returns the triangles counted as drawn.
 template <typename Emit>
-int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterFrame& frame,
-                 bool allFront, ClusterVertices& local, int width, int height, Emit&& emit) {
-  ProjectCluster(scene, cluster, frame, local);
-  const uint32_t* const faces = scene.clusters.faces.data();
+int SetUpCluster(const SetUpContext& in, const SceneCluster& cluster, bool allFront,
+                 bool testGroups, Emit&& emit) {
+  const Scene& scene = in.scene;
+  ClusterVertices& local = in.local;
+  local.NextCluster();
+  const SceneTriangle* const triangles = scene.triangles.data();
   const FacePlane* const planes = scene.facePlanesWorld.data();
   const uint32_t* const order = scene.clusters.triangles.data();
   const std::array<uint8_t, 3>* const corners = scene.clusters.corners.data();
-  const RasterVertex* const raster = local.raster.data();
-  const uint8_t* const codes = local.codes.data();
+  const Vec3* const positions = scene.clusters.positions.data() + cluster.vertexFirst;
+  const ClusterGroup* const groups = scene.clusters.groups.data();
+  RasterVertex* const raster = local.raster.data();
+  uint8_t* const codes = local.codes.data();
+  auto project = [&](uint8_t k) {
+    if (local.stamp[k] == local.current) return;
+    local.stamp[k] = local.current;
+    in.projector.Project(positions[k], raster[k], codes[k]);
+  };
+  const int width = in.spheres.width, height = in.spheres.height;
   int drawn = 0;
   uint32_t lastFace = UINT32_MAX;
   bool front = true;
-  for (uint32_t i = cluster.first; i < cluster.end; ++i) {
-    const uint32_t t = order[i];
-    const uint32_t face = faces[i];
-    if (!allFront && face != lastFace) {
-      lastFace = face;
-      front = planes[face].FacesPoint(frame.eyeWorld);
-    }
-    if (!front) continue;
-    const auto& v = corners[i];
-    if ((codes[v[0]] | codes[v[1]] | codes[v[2]]) != 0) {
-      if ((codes[v[0]] & codes[v[1]] & codes[v[2]]) != 0) continue;
-      std::array<RasterVertex, 10> polygon{};
-      const size_t count = ClipToRaster(scene, frame, t, polygon);
-      if (count < 3) continue;
-      for (size_t j = 1; j + 1 < count; ++j) {
-        emit(polygon[0], polygon[j], polygon[j + 1], face + 1, t);
+  constexpr uint32_t kGroup = SceneClusters::kGroupTriangles;
+  for (uint32_t first = cluster.first; first < cluster.end; first += kGroup) {
+    if (testGroups && !in.spheres.GroupMayCover(groups[first / kGroup])) continue;
+    for (uint32_t i = first; i < std::min(first + kGroup, cluster.end); ++i) {
+      const uint32_t t = order[i];
+      if (!allFront) {
+        const uint32_t face = triangles[t].face;
+        if (face != lastFace) {
+          lastFace = face;
+          front = planes[face].FacesPoint(in.frame.eyeWorld);
+        }
+        if (!front) continue;
       }
+      const auto& v = corners[i];
+      project(v[0]);
+      project(v[1]);
+      project(v[2]);
+      if ((codes[v[0]] | codes[v[1]] | codes[v[2]]) != 0) {
+        if ((codes[v[0]] & codes[v[1]] & codes[v[2]]) != 0) continue;
+        std::array<RasterVertex, 10> polygon{};
+        const size_t count = ClipToRaster(scene, in.frame, t, polygon);
+        if (count < 3) continue;
+        const uint32_t faceNumber = triangles[t].face + 1;
+        for (size_t j = 1; j + 1 < count; ++j) {
+          emit(polygon[0], polygon[j], polygon[j + 1], faceNumber, t);
+        }
+        ++drawn;
+        continue;
+      }
+      const RasterVertex& a = raster[v[0]];
+      const RasterVertex& b = raster[v[1]];
+      const RasterVertex& c = raster[v[2]];
+      if (!MayCoverSample(a, b, c, width, height)) continue;
+      emit(a, b, c, triangles[t].face + 1, t);
       ++drawn;
-      continue;
     }
-    const RasterVertex& a = raster[v[0]];
-    const RasterVertex& b = raster[v[1]];
-    const RasterVertex& c = raster[v[2]];
-    if (!MayCoverSample(a, b, c, width, height)) continue;
-    emit(a, b, c, face + 1, t);
-    ++drawn;
   }
   return drawn;
 }
@@ -188,8 +266,11 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
   if (threads > 1 && !frame.scanline && scene.triangles.size() >= frame.threadsFromTriangles) {
     return DrawThreaded(scene, frame, threads, depth, cells);
   }
-  const int width = cells.WidthCells(), height = cells.HeightCells();
+  const SphereTest spheres(frame, cells.WidthCells(), cells.HeightCells());
+  const VertexProjector projector(frame.eyeFromWorld, frame.projection, frame.clipPlanes,
+                                  frame.floatGeometry);
   ClusterVertices local;
+  const SetUpContext context{scene, frame, spheres, projector, local};
   int drawn = 0;
   auto rasterize = [&](const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                        uint32_t faceNumber, uint32_t) {
@@ -211,12 +292,11 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
   const auto& clusters = scene.clusters.clusters;
   for (size_t k = 0; k < clusters.size(); ++k) {
     const SceneCluster& cluster = clusters[k];
-    bool allFront = false;
-    if (!ClusterMayShow(cluster, frame, width, height, allFront)) continue;
+    bool allFront = false, testGroups = false;
+    if (!ClusterMayShow(cluster, frame, spheres, allFront, testGroups)) continue;
     ++clustersSetUp_;
-    drawn += ordered
-                 ? SetUpCluster(scene, cluster, frame, allFront, local, width, height, hold)
-                 : SetUpCluster(scene, cluster, frame, allFront, local, width, height, rasterize);
+    drawn += ordered ? SetUpCluster(context, cluster, allFront, testGroups, hold)
+                     : SetUpCluster(context, cluster, allFront, testGroups, rasterize);
   }
   if (ordered) {
     SortBySceneOrder(held);
@@ -228,7 +308,10 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
 int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, int threads,
                                DepthBuffer& depth, CellBuffer& cells) {
   if (!pool_ || pool_->Workers() != threads) pool_ = std::make_unique<WorkerPool>(threads);
-  const int width = cells.WidthCells(), height = cells.HeightCells();
+  const int height = cells.HeightCells();
+  const SphereTest spheres(frame, cells.WidthCells(), height);
+  const VertexProjector projector(frame.eyeFromWorld, frame.projection, frame.clipPlanes,
+                                  frame.floatGeometry);
   const auto& clusters = scene.clusters.clusters;
   // Many more runs than threads: which clusters face the eye is uneven along the scene order.
   const int runs = static_cast<int>(std::min<size_t>(clusters.size(), size_t{16} * threads));
@@ -244,6 +327,7 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
   nextTask_ = 0;
   auto setUp = [&](int) {
     ClusterVertices local;
+    const SetUpContext context{scene, frame, spheres, projector, local};
     for (int run = nextTask_++; run < runs; run = nextTask_++) {
       const size_t first = clusters.size() * run / runs, end = clusters.size() * (run + 1) / runs;
       std::vector<Binned>* const runBins = bins_.data() + static_cast<size_t>(run) * bands;
@@ -260,10 +344,10 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
       };
       int drawn = 0;
       for (size_t k = first; k < end; ++k) {
-        bool allFront = false;
-        if (!ClusterMayShow(clusters[k], frame, width, height, allFront)) continue;
+        bool allFront = false, testGroups = false;
+        if (!ClusterMayShow(clusters[k], frame, spheres, allFront, testGroups)) continue;
         ++setUpPerRun_[run];
-        drawn += SetUpCluster(scene, clusters[k], frame, allFront, local, width, height, bin);
+        drawn += SetUpCluster(context, clusters[k], allFront, testGroups, bin);
       }
       drawnPerRun_[run] = drawn;
     }
