@@ -4,7 +4,6 @@
 // sizes, views and thread counts; cluster culling on equals off.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -190,7 +189,7 @@ TEST(Clusters, ConeTestIsConservativeAndSkipsTheBackHalf) {
     size_t away = 0;
     for (const SceneCluster& cluster : sphere.clusters.clusters) {
       const ClusterFacing facing = FacingOf(cluster, eye);
-      for (const uint32_t t : sphere.clusters.Of(cluster)) {
+      for (uint32_t t = cluster.firstTriangle; t < cluster.triangleEnd; ++t) {
         const bool front = sphere.facePlanesWorld[sphere.triangles[t].face].FacesPoint(eye);
         if (facing == ClusterFacing::kAway) {
           ASSERT_FALSE(front) << "triangle " << t;
@@ -205,61 +204,21 @@ TEST(Clusters, ConeTestIsConservativeAndSkipsTheBackHalf) {
   }
 }
 
-// Small scenes: runs in scene order; big ones: every triangle once; each
-// triangle inside its cluster's bounding sphere and its group's.
-void ExpectEveryTriangleOnce(const Scene& scene, bool sceneOrder) {
-  EXPECT_EQ(scene.clusters.sceneOrder, sceneOrder);
-  ASSERT_EQ(scene.clusters.triangles.size(), scene.triangles.size());
-  std::vector<int> seen(scene.triangles.size(), 0);
+TEST(Clusters, CoverEveryTriangleOnceInOrder) {
+  const Scene scene = PrepareScene(*GenerateScene("sphere_cone"));
   uint32_t next = 0;
   for (const SceneCluster& cluster : scene.clusters.clusters) {
-    EXPECT_EQ(cluster.first, next);
-    EXPECT_GT(cluster.end, cluster.first);
-    EXPECT_LE(cluster.end - cluster.first, SceneClusters::kMaxTriangles);
-    const std::span<const uint32_t> members = scene.clusters.Of(cluster);
-    for (size_t i = 0; i < members.size(); ++i) {
-      const uint32_t t = members[i];
-      if (sceneOrder) {
-        EXPECT_EQ(t, next + i);
-      }
-      ++seen[t];
-      const ClusterGroup& group =
-          scene.clusters.groups[(cluster.first + i) / SceneClusters::kGroupTriangles];
-      const Vec3 groupCenter{group.center[0], group.center[1], group.center[2]};
+    EXPECT_EQ(cluster.firstTriangle, next);
+    EXPECT_GT(cluster.triangleEnd, cluster.firstTriangle);
+    EXPECT_LE(cluster.triangleEnd - cluster.firstTriangle, SceneClusters::kMaxTriangles);
+    for (uint32_t t = cluster.firstTriangle; t < cluster.triangleEnd; ++t) {
       for (const uint32_t v : scene.triangles[t].vertices) {
         EXPECT_LE(Length(scene.verticesWorld[v] - cluster.centerWorld), cluster.radius);
-        EXPECT_LE(Length(scene.verticesWorld[v] - groupCenter), group.radius);
       }
     }
-    next = cluster.end;
+    next = cluster.triangleEnd;
   }
   EXPECT_EQ(next, scene.triangles.size());
-  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<ptrdiff_t>(seen.size()));
-}
-
-TEST(Clusters, CoverEveryTriangleOnceInOrder) {
-  ExpectEveryTriangleOnce(PrepareScene(*GenerateScene("sphere_cone")), true);
-  ExpectEveryTriangleOnce(PrepareScene(GenerateTriangleSphere(50000)), false);
-}
-
-// Spatial clusters make culling fire: on a big sphere most clusters are
-// skipped whole (back-facing or between samples), in every method and thread count.
-TEST(Clusters, CullingSkipsMostClustersOfABigSphere) {
-  const Scene sphere = PrepareScene(GenerateTriangleSphere(2000000));
-  const int clusterCount = static_cast<int>(sphere.clusters.clusters.size());
-  for (const Method method : {Method::kZBuffer, Method::kCull}) {
-    for (const int threads : {1, 2}) {
-      Renderer renderer;
-      RenderOptions options = Options(method, threads, true, true);
-      const Drawn drawn = Draw(renderer, sphere, kViews[0], 160, 48, options);
-      EXPECT_GT(drawn.stats.clustersSetUp, 0);
-      EXPECT_LT(drawn.stats.clustersSetUp, clusterCount / 2)
-          << MethodName(method) << " threads " << threads;
-      options.variant.clusterCulling = false;
-      EXPECT_EQ(Draw(renderer, sphere, kViews[0], 160, 48, options).stats.clustersSetUp,
-                clusterCount);
-    }
-  }
 }
 
 }  // namespace

@@ -31,15 +31,13 @@ struct ClusterFrame {
   size_t threadsFromTriangles = 0;  ///< fewer triangles: one thread draws
 };
 
-/// The surface pass of zbuffer and cull: cluster by cluster, whole clusters
-/// skipped when they face away or cover no sample, the others' vertices
-/// transformed and their triangles set up. With several threads runs of
-/// clusters are set up in parallel into per-(run, row band) bins, then each
-/// band is drawn by one thread walking the runs in order.
-/// The nearest-wins rule breaks depth ties by face number, so its frame does
-/// not depend on the order; the overwriting rules draw spatial clusters'
-/// triangles sorted back into scene order. Either way the frame is bit for
-/// bit the face-by-face loop's.
+/// The surface pass of zbuffer and cull: every vertex transformed, then the
+/// triangles cluster by cluster in scene order, whole clusters skipped when
+/// they face away or cover no sample. With several threads the vertices are
+/// split in ranges, runs of clusters are set up in parallel into per-(run,
+/// row band) bins, then each band is drawn by one thread walking the runs in
+/// order: every sample sees the triangles in the single-thread order, so the
+/// frame is bit for bit the same.
 class ClusterStage {
  public:
   /// True when the scene carries clusters for all its triangles.
@@ -49,26 +47,20 @@ class ClusterStage {
   int Draw(const Scene& scene, const ClusterFrame& frame, int threads, DepthBuffer& depth,
            CellBuffer& cells);
 
-  /// Clusters the last Draw did not skip whole.
-  int ClustersSetUp() const { return clustersSetUp_; }
-
-  /// A set-up triangle (or a piece of a clipped one's fan) waiting to be drawn.
+ private:
   struct Binned {
     RasterVertex a, b, c;
     uint32_t faceNumber;
-    uint32_t triangle;  ///< into Scene::triangles: the scene order
   };
 
- private:
   int DrawThreaded(const Scene& scene, const ClusterFrame& frame, int threads, DepthBuffer& depth,
                    CellBuffer& cells);
 
   std::unique_ptr<WorkerPool> pool_;
-  std::vector<std::vector<Binned>> bins_;     ///< [run * bands + band]
-  std::vector<std::vector<Binned>> ordered_;  ///< per band: its triangles in scene order
+  std::vector<RasterVertex> raster_;  ///< per scene vertex, this frame
+  std::vector<uint8_t> codes_;
+  std::vector<std::vector<Binned>> bins_;  ///< [run * bands + band]
   std::vector<int> drawnPerRun_;
-  std::vector<int> setUpPerRun_;
-  int clustersSetUp_ = 0;
   std::atomic<int> nextTask_{0};
 };
 

@@ -69,7 +69,6 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   RenderStats stats;
   if (DrawsByCluster(scene, resolved)) {
     stats.trianglesDrawn = DrawClusters(scene, camera, resolved, depth, cells);
-    stats.clustersSetUp = clusterStage_.ClustersSetUp();
     stats.facesVisible = ShadeCells(scene, resolved, cells);
     return stats;
   }

@@ -20,7 +20,6 @@ namespace termshade {
 struct RenderStats {
   int trianglesDrawn = 0;  ///< triangles rasterized: facing the eye (or culling off), near a sample
   int facesVisible = 0;    ///< distinct faces seen in at least one cell
-  int clustersSetUp = 0;   ///< by cluster: clusters not skipped whole (0 face by face)
 };
 
 /// The method actually drawn: auto becomes cull or zbuffer for the scene.

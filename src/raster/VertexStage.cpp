@@ -13,7 +13,13 @@
 namespace termshade {
 namespace {
 
-using StageConstants = VertexStageConstants;
+// The per-frame constants of the projection and the conservative inside test.
+struct StageConstants {
+  Mat4 m;
+  double d, vScale, cx, cy;
+  double nearZ;           ///< twice the near distance: surely in front
+  double xLimit, yLimit;  ///< half the guard band: surely inside it
+};
 
 StageConstants MakeConstants(const Mat4& eyeFromWorld, const Projection& proj,
                              const ViewClipPlanes& planes) {
@@ -132,22 +138,6 @@ size_t ProjectPairs(const StageConstants& k, std::span<const Vec3> vertices, siz
 #endif
 
 }  // namespace
-
-VertexProjector::VertexProjector(const Mat4& eyeFromWorld, const Projection& proj,
-                                 const ViewClipPlanes& planes, bool floatGeometry)
-    : k_(MakeConstants(eyeFromWorld, proj, planes)),
-      proj_(proj),
-      planes_(planes),
-      floatGeometry_(floatGeometry) {}
-
-void VertexProjector::ProjectAny(Vec3 pWorld, RasterVertex& raster, uint8_t& outCode) const {
-  const VertexStageOutput out{&raster, &outCode, nullptr};
-  if (floatGeometry_) {
-    ProjectOne<true>(k_, proj_, planes_, pWorld, 0, out);
-  } else {
-    ProjectOne<false>(k_, proj_, planes_, pWorld, 0, out);
-  }
-}
 
 float ProjectVertices(std::span<const Vec3> verticesWorld, const Mat4& eyeFromWorld,
                       const Projection& proj, const ViewClipPlanes& planes, bool floatGeometry,
