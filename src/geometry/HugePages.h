@@ -17,4 +17,17 @@ void AdviseHugePages(std::vector<T>& values) {
   AdviseHugePages(values.data(), values.capacity() * sizeof(T));
 }
 
+/// Resizes a per-frame buffer to count entries; when it must grow, the new
+/// storage is advised first, so its first fill faults in huge pages. The
+/// old contents are not kept.
+template <typename T>
+void ResizeWithHugePages(std::vector<T>& values, size_t count) {
+  if (values.capacity() < count) {
+    std::vector<T>().swap(values);
+    values.reserve(count);
+    AdviseHugePages(values);
+  }
+  values.resize(count);
+}
+
 }  // namespace termshade

@@ -5,6 +5,7 @@
 #include <span>
 
 #include "geometry/FixedRange.h"
+#include "geometry/HugePages.h"
 #include "geometry/ViewingTransform.h"
 #include "raster/FixedPoint.h"
 #include "raster/VertexStage.h"
@@ -159,8 +160,8 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
     return DrawThreaded(scene, frame, threads, depth, cells);
   }
   const int width = cells.WidthCells(), height = cells.HeightCells();
-  raster_.resize(scene.verticesWorld.size());
-  codes_.resize(scene.verticesWorld.size());
+  ResizeWithHugePages(raster_, scene.verticesWorld.size());
+  ResizeWithHugePages(codes_, scene.verticesWorld.size());
   ProjectRange(scene, frame, 0, raster_.size(), raster_.data(), codes_.data());
   int drawn = 0;
   auto rasterize = [&](const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
@@ -191,8 +192,8 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
   const int runs = static_cast<int>(std::min<size_t>(clusters.size(), size_t{16} * threads));
   const int bands = std::min(height, 4 * threads);
   const int rowsPerBand = (height + bands - 1) / bands;
-  raster_.resize(scene.verticesWorld.size());
-  codes_.resize(scene.verticesWorld.size());
+  ResizeWithHugePages(raster_, scene.verticesWorld.size());
+  ResizeWithHugePages(codes_, scene.verticesWorld.size());
   bins_.resize(static_cast<size_t>(runs) * bands);
   for (auto& bin : bins_) bin.clear();
   drawnPerRun_.assign(runs, 0);

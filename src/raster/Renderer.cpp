@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/HugePages.h"
 #include "geometry/ViewingTransform.h"
 #include "raster/FixedPoint.h"
 #include "raster/LineRasterizer.h"
@@ -198,9 +199,9 @@ void Renderer::TransformVertices(const Scene& scene, const Camera& camera,
   eyeFromWorld_ = EyeFromWorld(camera.view);
   const Projection& proj = camera.projection;
   const size_t count = scene.verticesWorld.size();
-  zEye_.resize(needEyeZ ? count : 0);
-  rasterVertices_.resize(count);
-  outCodes_.resize(count);
+  ResizeWithHugePages(zEye_, needEyeZ ? count : 0);
+  ResizeWithHugePages(rasterVertices_, count);
+  ResizeWithHugePages(outCodes_, count);
   maxW_ = ProjectVertices(
       scene.verticesWorld, eyeFromWorld_, proj, clipPlanes_, variant.floatGeometry,
       {rasterVertices_.data(), outCodes_.data(), needEyeZ ? zEye_.data() : nullptr});
