@@ -31,7 +31,7 @@ std::string ExecutableFolder() {
 }
 
 bool IsRegularFile(const std::string& path) {
-  struct stat info{};
+  struct stat info {};
   return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
 }
 
@@ -86,7 +86,11 @@ const OpenedModule& Module() {
 // A module status other than kDone, as the exception the call would have thrown in-process.
 void Rethrow(ModuleStatus status, const std::string& exceptionText) {
   if (status == ModuleStatus::kOutOfMemory) throw std::bad_alloc();
-  if (status != ModuleStatus::kDone) throw std::runtime_error(exceptionText);
+  if (status != ModuleStatus::kDone) {
+    throw std::runtime_error(exceptionText.empty()
+                                 ? "the Assimp import module failed (no reason given)"
+                                 : exceptionText);
+  }
 }
 
 }  // namespace
@@ -132,11 +136,11 @@ bool AssimpKnowsExtension(const std::string& format) {
 // Assimp 5.2's RAW importer leaks its half-built scene when validation rejects
 // it (a null child node, tests/models/bad/raw_null_child_node.raw). The leak
 // is inside libassimp and bounded by the file; ours are still reported.
-extern "C" const char* __lsan_default_suppressions();  // NOLINT(bugprone-reserved-identifier)
+extern "C" const char* __lsan_default_suppressions();   // NOLINT(bugprone-reserved-identifier)
 extern "C" const char* __lsan_default_suppressions() {  // NOLINT(bugprone-reserved-identifier)
   return "leak:libassimp.so\n";
 }
-extern "C" const char* __lsan_default_options();  // NOLINT(bugprone-reserved-identifier)
+extern "C" const char* __lsan_default_options();   // NOLINT(bugprone-reserved-identifier)
 extern "C" const char* __lsan_default_options() {  // NOLINT(bugprone-reserved-identifier)
   return "print_suppressions=0";
 }

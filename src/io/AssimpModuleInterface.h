@@ -40,9 +40,8 @@ struct AssimpModuleApi {
   uint32_t version;        ///< kAssimpModuleVersion of the module's build
   const char* buildStamp;  ///< TERMSHADE_MODULE_STAMP of the module's build
   /// Imports one model with Assimp (see ImportWithAssimp in io/AssimpImport.h).
-  ModuleStatus (*import)(const ImportSource& source, std::string& bytes,
-                         const LoadOptions& options, Loaded<Mesh>& result,
-                         std::string& exceptionText) noexcept;
+  ModuleStatus (*import)(const ImportSource& source, std::string& bytes, const LoadOptions& options,
+                         Loaded<Mesh>& result, std::string& exceptionText) noexcept;
   /// Assimp's importer extensions: "*.3ds;*.obj;...".
   ModuleStatus (*extensionPatterns)(std::string& patterns, std::string& exceptionText) noexcept;
 };

@@ -85,10 +85,9 @@ TEST(AssimpModule, IsNotLoadedForDatObjStlOrPly) {
   ASSERT_EQ(MappedFilesContaining("assimp"), "") << "mapped before any load";
   const ModelFolder folder;
   const Mesh sphere = GenerateTriangleSphere(500);
-  for (const auto& [name, format] : {std::pair{"m.obj", ExportFormat::kObj},
-                                     std::pair{"m.stl", ExportFormat::kStl},
-                                     std::pair{"m.ply", ExportFormat::kPly},
-                                     std::pair{"m.dat", ExportFormat::kDat}}) {
+  for (const auto& [name, format] :
+       {std::pair{"m.obj", ExportFormat::kObj}, std::pair{"m.stl", ExportFormat::kStl},
+        std::pair{"m.ply", ExportFormat::kPly}, std::pair{"m.dat", ExportFormat::kDat}}) {
     const Mesh mesh = LoadOrFail(folder.Write(name, ExportMesh(sphere, format)));
     EXPECT_EQ(mesh.FaceCount(), sphere.FaceCount()) << name;
     EXPECT_FALSE(test::FrameText(mesh).empty());

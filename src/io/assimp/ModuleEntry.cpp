@@ -9,10 +9,11 @@
 namespace termshade {
 namespace {
 
-ModuleStatus Import(const ImportSource& source, std::string& bytes, const LoadOptions& options,
-                    Loaded<Mesh>& result, std::string& exceptionText) noexcept {
+// Runs work, turning what it throws into a status: no exception leaves the module.
+template <typename Work>
+ModuleStatus Guarded(Work&& work, std::string& exceptionText) noexcept {
   try {
-    result = RunAssimpImport(source, std::move(bytes), options);
+    work();
     return ModuleStatus::kDone;
   } catch (const std::bad_alloc&) {
     return ModuleStatus::kOutOfMemory;
@@ -22,22 +23,19 @@ ModuleStatus Import(const ImportSource& source, std::string& bytes, const LoadOp
     } catch (...) {  // no memory left to copy the text: it stays empty
     }
     return ModuleStatus::kException;
+  } catch (...) {
+    return ModuleStatus::kException;  // not a std::exception: no text to give
   }
 }
 
+ModuleStatus Import(const ImportSource& source, std::string& bytes, const LoadOptions& options,
+                    Loaded<Mesh>& result, std::string& exceptionText) noexcept {
+  return Guarded([&] { result = RunAssimpImport(source, std::move(bytes), options); },
+                 exceptionText);
+}
+
 ModuleStatus ExtensionPatterns(std::string& patterns, std::string& exceptionText) noexcept {
-  try {
-    patterns = AssimpExtensionPatterns();
-    return ModuleStatus::kDone;
-  } catch (const std::bad_alloc&) {
-    return ModuleStatus::kOutOfMemory;
-  } catch (const std::exception& e) {
-    try {
-      exceptionText = e.what();
-    } catch (...) {  // no memory left to copy the text: it stays empty
-    }
-    return ModuleStatus::kException;
-  }
+  return Guarded([&] { patterns = AssimpExtensionPatterns(); }, exceptionText);
 }
 
 constexpr AssimpModuleApi kApi{kAssimpModuleVersion, TERMSHADE_MODULE_STAMP, Import,
