@@ -42,12 +42,11 @@ fi
 # program's own Assimp module (opened once a file needs it) and the libraries
 # the dynamic loader opens for it.
 folder=$(cd "$(dirname -- "$file")" && pwd -P)
-module=$(dirname -- "$bin")/termshade-assimp.so
-{
-  echo /etc/ld.so.cache
-  [ -f "$module" ] && realpath -- "$module" &&
-    ldd "$module" | grep -oP '=> \K/\S+' | xargs -r realpath --
-} >"$work/own"
+if [ -n "${CORPUS_OWN_FILES:-}" ]; then
+  cp "$CORPUS_OWN_FILES" "$work/own"
+else
+  bash "$(dirname "$0")/own_files.sh" "$bin" >"$work/own"
+fi
 outside=$(grep -oP 'open(at)?\((AT_FDCWD, )?"\K([^"\\]|\\.)*' "$work/trace" |
   awk -v model="$file" 'started { print } $0 == model { started = 1 }' |
   { mapfile -t opened; [ "${#opened[@]}" -gt 0 ] && realpath -m -- "${opened[@]}"; } |
