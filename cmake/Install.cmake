@@ -15,13 +15,15 @@ foreach(kind IN ITEMS man bash zsh fish)
     OUTPUT ${output}
     COMMAND termshade --generate ${kind} > ${output}.part
     COMMAND ${CMAKE_COMMAND} -E rename ${output}.part ${output}
-    DEPENDS termshade
+    DEPENDS termshade termshade_assimp
     COMMENT "Generating ${file_${kind}}")
   list(APPEND TERMSHADE_GENERATED_FILES ${output})
 endforeach()
 add_custom_target(termshade_docs ALL DEPENDS ${TERMSHADE_GENERATED_FILES})
 
 install(TARGETS termshade RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The Assimp import module, where the program looks for it (src/io/AssimpImport.h).
+install(TARGETS termshade_assimp LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/termshade)
 install(FILES ${TERMSHADE_GENERATED}/termshade.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES ${TERMSHADE_GENERATED}/termshade.bash
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME termshade)

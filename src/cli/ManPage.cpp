@@ -185,8 +185,10 @@ void WriteManPage(const CommandModel& root, const std::string& version,
          "lists), read by its own parser; errors name file:line:column.\n"
       << ".TP\n"
       << Italic("MODEL") << ".obj, .stl, .ply, .off, .gltf, ...\n"
-      << "Read through the Open Asset Import Library (Assimp) with polygons kept. Every "
-         "extension read: ";
+      << "Read through the Open Asset Import Library (Assimp) with polygons kept (binary STL, "
+         "PLY and plain OBJ by termshade's own readers). Assimp sits in the module "
+         "termshade-assimp.so, in the termshade folder of the library directory beside the "
+         "program's, loaded only for a file that needs it. Every extension read: ";
   std::string list;
   for (const std::string& extension : modelExtensions) {
     list += (list.empty() ? "" : ", ") + std::string(".") + extension;

@@ -1,30 +1,34 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "geometry/Mesh.h"
+#include "io/AssimpModuleInterface.h"
 #include "io/LoadError.h"
 #include "io/ModelLoader.h"
 
 namespace termshade {
 
-/// One model for the Open Asset Import Library, its bytes already read.
-struct ImportSource {
-  std::string displayName;  ///< the name messages use (the path as given, or "-")
-  std::string importName;   ///< the name Assimp sees: absolute, with the format's extension
-  std::string folder;       ///< canonical folder references must stay in; empty: none allowed
-  std::string format;       ///< extension without the dot; empty: Assimp sniffs the content
-};
+/// The Assimp import module's file name. It is opened (dlopen, RTLD_NOW |
+/// RTLD_LOCAL) on the first call that needs Assimp, from a fixed place next to
+/// this program's own file (/proc/self/exe): the installed layout's
+/// ../<libdir>/termshade/ first, else the build tree's own folder. Never from
+/// the working directory or a search path.
+inline constexpr const char* kAssimpModuleName = "termshade-assimp.so";
 
-/// Imports through Assimp with our confined IOSystem (regular files inside the
-/// model's folder only), Assimp's data-structure validation, progress and
-/// cancellation from options, and the budget checked before the mesh is built.
-/// Fills faceColors (material diffuse or averaged vertex colours, when the file
-/// gives them) and upAxisFile (the format's convention or what FBX and COLLADA declare).
+/// Imports through Assimp in the module (io/assimp/AssimpImport.h says how).
+/// A module that is missing or from another build is a LoadError naming it.
 Loaded<Mesh> ImportWithAssimp(const ImportSource& source, std::string bytes,
                               const LoadOptions& options);
 
 /// True when Assimp has an importer for this extension (without the dot).
+/// obj, stl and ply are answered without loading the module (Assimp reads
+/// them all); other extensions load it (false when it cannot be loaded).
 bool AssimpKnowsExtension(const std::string& format);
+
+/// Assimp's extensions, lower case, without dots. Throws std::runtime_error
+/// naming the module when it cannot be loaded.
+std::vector<std::string> AssimpExtensions();
 
 }  // namespace termshade

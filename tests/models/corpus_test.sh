@@ -22,9 +22,16 @@ here=$(cd "$(dirname "$0")" && pwd)
 results=$(mktemp)
 trap 'rm -f "$results"' EXIT
 
+# The program's own files it may open after a model (its Assimp module and
+# the libraries the loader maps for it), listed once for every check.
+own=$(mktemp)
+bash "$here/own_files.sh" "$bin" >"$own"
+export CORPUS_OWN_FILES=$own
+trap 'rm -f "$results" "$own"' EXIT
+
 # FIFOs, links and a folder as models: made here, listed by name (find -type f skips them).
 special=$(mktemp -d)
-trap 'rm -f "$results"; rm -rf "$special"' EXIT
+trap 'rm -f "$results" "$own"; rm -rf "$special"' EXIT
 bash "$here/bad/make_special_files.sh" "$special/special"
 {
   for dir in "$@"; do

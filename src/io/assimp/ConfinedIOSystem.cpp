@@ -1,4 +1,4 @@
-#include "io/ConfinedIOSystem.h"
+#include "io/assimp/ConfinedIOSystem.h"
 
 #include <sys/stat.h>
 

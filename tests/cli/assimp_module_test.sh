@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# The Assimp import module (termshade-assimp.so) as the program reaches it:
+# not opened for .dat, OBJ, STL or PLY, opened for formats only Assimp reads
+# (and --reader assimp) with the same frame; without it, or with a broken
+# one, a clean error naming it (exit 1), while other formats still render.
+# Usage: assimp_module_test.sh path/to/termshade source-dir
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { echo "FAIL $1"; failed=$((failed + 1)); }
+expect() {  # expect NAME COMMAND...
+  local name=$1
+  shift
+  if "$@"; then pass; else fail "$name"; fi
+}
+
+# A cube as OBJ and as OFF (which only Assimp reads).
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n' >"$work/cube.obj"
+printf 'f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n' >>"$work/cube.obj"
+{
+  printf 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n'
+  printf '4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n'
+} >"$work/cube.off"
+
+# What the dynamic loader opens (LD_DEBUG=files), per model.
+opened() {  # opened FRAME MODEL [OPTIONS...]: the loader's log of the files it opened
+  local frame=$1
+  shift
+  LD_DEBUG=files "$bin" render "$@" --size 40x12 -o "$work/$frame" 2>&1 >/dev/null |
+    grep -E 'file=.*\[0\];  (needed|dynamically loaded)'
+}
+for model in "$work/cube.obj" "$src/data/cube.dat"; do
+  log=$(opened "$(basename "$model").txt" "$model")
+  expect "$(basename "$model"): the program runs" test -n "$log"
+  expect "$(basename "$model"): no Assimp module or library opened: $(grep -i assimp <<<"$log")" \
+    bash -c '! grep -qi assimp <<<"$1"' _ "$log"
+done
+log=$(opened off.txt "$work/cube.off")
+expect "cube.off: the module is loaded" grep -q 'termshade-assimp.so.*dynamically loaded' <<<"$log"
+expect "cube.off: same frame as cube.obj" cmp -s "$work/off.txt" "$work/cube.obj.txt"
+log=$(opened assimp.txt "$work/cube.obj" --reader assimp)
+expect "--reader assimp: the module is loaded" grep -q 'termshade-assimp.so' <<<"$log"
+expect "--reader assimp: same frame" cmp -s "$work/assimp.txt" "$work/cube.obj.txt"
+
+# The program alone in a folder: no module next to it (nor in ../lib*/termshade).
+mkdir -p "$work/alone/bin"
+cp "$bin" "$work/alone/bin/termshade"
+run_alone() {  # run_alone MODEL: exit code, stderr in $work/err
+  "$work/alone/bin/termshade" render "$1" --size 40x12 >"$work/out" 2>"$work/err" </dev/null
+}
+clean_error() {  # clean_error NAME WANT_TEXT: exit 1, the file and WANT_TEXT named, no control byte
+  local name=$1 want=$2 code=$3
+  expect "$name: exit 1 (got $code): $(head -c 300 "$work/err")" test "$code" -eq 1
+  expect "$name: names cube.off" grep -qF "cube.off" "$work/err"
+  expect "$name: says '$want'" grep -qF -- "$want" "$work/err"
+  expect "$name: no control byte" bash -c '! LC_ALL=C grep -q "[[:cntrl:]]" <(tr -d "\n" <"$1")' _ "$work/err"
+}
+run_alone "$work/cube.obj"
+expect "without the module: OBJ renders (exit $?)" test -s "$work/out"
+run_alone "$work/cube.off"
+clean_error "without the module" "the Assimp import module termshade-assimp.so is missing" $?
+expect "without the module: says where it looked" grep -qF "$work/alone/bin/termshade-assimp.so" "$work/err"
+
+# Not a shared object; a shared object that is not ours.
+printf 'not an ELF file\n' >"$work/alone/bin/termshade-assimp.so"
+run_alone "$work/cube.off"
+clean_error "a broken module" "cannot load the Assimp import module" $?
+libz=$(ldconfig -p | awk '/libz\.so\.1 .*x86-64/ { print $NF; exit }')
+if [ -n "$libz" ]; then
+  cp "$libz" "$work/alone/bin/termshade-assimp.so"
+  run_alone "$work/cube.off"
+  clean_error "another library as the module" "is not a termshade module" $?
+fi
+# Never from the working directory.
+rm -f "$work/alone/bin/termshade-assimp.so"
+cp "$(dirname "$bin")/termshade-assimp.so" "$work/termshade-assimp.so"
+(cd "$work" && "$work/alone/bin/termshade" render cube.off --size 40x12 >"$work/out" 2>"$work/err" </dev/null)
+clean_error "a module in the working directory" "is missing" $?
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
