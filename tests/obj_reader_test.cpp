@@ -105,28 +105,14 @@ TEST(ObjReader, ChunksGiveTheSameMeshAndErrorAsOneChunk) {
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\nv 1 2 3\nf 1 2 3\nf 1 2 -9\n",
       "v 0 0 0\nv 1 0 0\nv 0 1 q\n" + good,
   };
-  const auto describe = [](std::optional<Loaded<Mesh>> read) {
-    if (!read) return std::string("(importer)");
-    if (!read->Ok()) return read->Error().ToString();
-    const Mesh& mesh = read->Value();
-    std::string text;
-    for (const Vec3& p : mesh.verticesFile) {
-      text += std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.z) + " ";
-    }
-    for (const uint32_t c : mesh.faceCorners) text += std::to_string(c) + ",";
-    for (const uint32_t s : mesh.faceStarts) text += std::to_string(s) + ";";
-    for (const auto& s : mesh.segments)
-      text += std::to_string(s[0]) + "-" + std::to_string(s[1]) + " ";
-    return text + std::to_string(mesh.edgeHidden.size());
-  };
   for (const std::string& text : {good, bad[0], bad[1], bad[2]}) {
-    const std::string one = describe(ReadObjInChunks(text, "m.obj", kBudget, 1));
+    const std::string one = test::ReadResultText(ReadObjInChunks(text, "m.obj", kBudget, 1));
     for (size_t chunks = 2; chunks <= 24; ++chunks) {
-      EXPECT_EQ(describe(ReadObjInChunks(text, "m.obj", kBudget, chunks)), one)
+      EXPECT_EQ(test::ReadResultText(ReadObjInChunks(text, "m.obj", kBudget, chunks)), one)
           << chunks << " chunks";
     }
   }
-  EXPECT_EQ(describe(ReadObjInChunks(bad[1], "m.obj", kBudget, 5)),
+  EXPECT_EQ(test::ReadResultText(ReadObjInChunks(bad[1], "m.obj", kBudget, 5)),
             "m.obj:8:7: vertex -9 is not defined (4 so far)");
 }
 
