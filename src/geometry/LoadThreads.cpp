@@ -1,6 +1,7 @@
 #include "geometry/LoadThreads.h"
 
 #include <pthread.h>
+#include <sched.h>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -15,9 +16,15 @@ namespace termshade {
 
 int LoadThreadCount(size_t items) {
   constexpr size_t kMinItemsPerThread = 65536;
-  const auto cores = static_cast<size_t>(std::max(1U, std::thread::hardware_concurrency()));
-  return static_cast<int>(
-      std::clamp<size_t>(items / kMinItemsPerThread, 1, std::min<size_t>(cores, 8)));
+  constexpr size_t kMostThreads = 8;
+  const size_t wanted = std::min(items / kMinItemsPerThread, kMostThreads);
+  if (wanted < 2) return 1;
+  // The cores this process may run on, by a system call: hardware_concurrency
+  // reads /sys, a file outside the model's folder (tests/models/corpus_check.sh).
+  cpu_set_t cores;
+  CPU_ZERO(&cores);
+  if (sched_getaffinity(0, sizeof(cores), &cores) != 0) return 1;
+  return static_cast<int>(std::clamp<size_t>(static_cast<size_t>(CPU_COUNT(&cores)), 1, wanted));
 }
 
 void RunOnLoadThreads(int threads, const std::function<void(int)>& work) {
