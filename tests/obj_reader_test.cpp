@@ -94,6 +94,28 @@ TEST(ObjReader, DrawsWhatTheImporterDraws) {
   }
 }
 
+// Every chunk count gives the same mesh, or the same first error in file order.
+TEST(ObjReader, ChunksGiveTheSameMeshAndErrorAsOneChunk) {
+  const std::string good =
+      "# cube-ish\r\nv 0 0 0\nv 1 0 0\r\nv 1 1 0\nv 0 1 0\nvt 0 0\n"
+      "f 1 2 3 4 # quad\nf -1 -2 -3\nl 1 2 3\nf 1 2\nf 1\nv 0 0 1\n\n"
+      "v 1 0 1\nf 5/1 6/1/1 1//1\nf -2 -1 2\nl 5 6\nv 7 7 7\nf 1 3 6";
+  const std::string bad[] = {
+      good + "\nf 1 2 99\nv 1 x 0\n",
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\nv 1 2 3\nf 1 2 3\nf 1 2 -9\n",
+      "v 0 0 0\nv 1 0 0\nv 0 1 q\n" + good,
+  };
+  for (const std::string& text : {good, bad[0], bad[1], bad[2]}) {
+    const std::string one = test::ReadResultText(ReadObjInChunks(text, "m.obj", kBudget, 1));
+    for (size_t chunks = 2; chunks <= 24; ++chunks) {
+      EXPECT_EQ(test::ReadResultText(ReadObjInChunks(text, "m.obj", kBudget, chunks)), one)
+          << chunks << " chunks";
+    }
+  }
+  EXPECT_EQ(test::ReadResultText(ReadObjInChunks(bad[1], "m.obj", kBudget, 5)),
+            "m.obj:8:7: vertex -9 is not defined (4 so far)");
+}
+
 TEST(DropUnusedVertices, KeepsWhatSegmentsUseAndTheOrder) {
   Mesh mesh;
   mesh.verticesFile = {{0, 0, 0}, {5, 5, 5}, {1, 0, 0}, {0, 1, 0}, {6, 6, 6}, {2, 2, 2}};

@@ -83,6 +83,62 @@ TEST(PlyReader, ReadsBigEndian) {
   EXPECT_EQ(mesh.verticesFile[2], (Vec3{0, 3, 0.5}));
 }
 
+// A binary PLY of both byte orders from the same values: vertices with an
+// extra property, then faces (triangles, a quad, a 2-corner segment, and
+// what the test adds), cut short by cut bytes.
+std::string BinaryPly(bool little, const std::vector<std::vector<int32_t>>& faces, size_t cut) {
+  std::string bytes = std::string("ply\nformat binary_") + (little ? "little" : "big") +
+                      "_endian 1.0\nelement vertex 5\nproperty float x\nproperty double y\n"
+                      "property uchar tag\nproperty float z\nelement face " +
+                      std::to_string(faces.size()) +
+                      "\nproperty list uchar int vertex_indices\nend_header\n";
+  const auto append = [&bytes, little](auto value) {
+    char raw[sizeof value];
+    std::memcpy(raw, &value, sizeof value);
+    for (size_t i = 0; i < sizeof value; ++i) bytes += raw[little ? i : sizeof value - 1 - i];
+  };
+  for (int v = 0; v < 5; ++v) {
+    append(static_cast<float>(v) * 0.5F);
+    append(static_cast<double>(v * v));
+    append(static_cast<uint8_t>(v));
+    append(-static_cast<float>(v));
+  }
+  for (const auto& face : faces) {
+    append(static_cast<uint8_t>(face.size()));
+    for (const int32_t index : face) append(index);
+  }
+  return bytes.substr(0, bytes.size() - cut);
+}
+
+std::string Describe(const std::string& bytes) {
+  return test::ReadResultText(ReadPly(bytes, "m.ply", kBudget));
+}
+
+// Little-endian files take a fast path; big-endian ones the general one: the
+// same mesh, or the same error, either way.
+TEST(PlyReader, BothByteOrdersGiveTheSameMeshOrError) {
+  const std::vector<std::vector<int32_t>> good = {{0, 1, 2}, {1, 2, 3, 4}, {0, 4}, {4, 3, 2}};
+  auto withFace = [&good](std::vector<int32_t> face) {
+    auto faces = good;
+    faces.insert(faces.begin() + 2, std::move(face));
+    return faces;
+  };
+  const std::vector<std::vector<std::vector<int32_t>>> cases = {
+      good, withFace({0, 1, 5}), withFace({0, -1, 2}), withFace({2, 1}), withFace({3})};
+  for (size_t c = 0; c < cases.size(); ++c) {
+    for (const size_t cut : {0UL, 3UL, 14UL, 60UL}) {
+      const std::string little = Describe(BinaryPly(true, cases[c], cut));
+      EXPECT_EQ(little, Describe(BinaryPly(false, cases[c], cut)))
+          << "case " << c << " cut " << cut;
+      if (c == 0 && cut == 0) {
+        EXPECT_EQ(little.find("m.ply"), std::string::npos) << little;
+      }
+    }
+  }
+  EXPECT_EQ(Describe(BinaryPly(true, withFace({0, 1, 5}), 0)),
+            "m.ply: face 2 names vertex 5 (the file has 5 vertices) (at byte 128)");
+}
+
 TEST(PlyReader, LocatesHeaderProblems) {
   EXPECT_EQ(ErrorOf("plx\n"), "bad.ply:1:1: expected 'ply' on the first line");
   EXPECT_EQ(ErrorOf("ply\nformat ascii 1.0\nelement vertex 3\nproperty wide x\n"),

@@ -11,4 +11,10 @@ namespace termshade {
 /// corners. Faces, their order and their corners' positions are unchanged.
 void WeldExactPositions(Mesh& mesh);
 
+/// WeldExactPositions, then NumberVerticesByFirstUse, in one step (a hash
+/// table, no vertex copies): the vertices are the distinct positions the faces (then the
+/// segments) use, numbered by first use; unused vertices are dropped. What
+/// the own readers give for indexed formats, identical to the two steps.
+void WeldAndNumberByFirstUse(Mesh& mesh);
+
 }  // namespace termshade

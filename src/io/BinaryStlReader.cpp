@@ -1,13 +1,10 @@
 #include "io/BinaryStlReader.h"
 
-#include <meshoptimizer.h>
-
-#include <array>
 #include <cstdint>
 #include <cstring>
-#include <type_traits>
 #include <vector>
 
+#include "geometry/FirstOccurrence.h"
 #include "geometry/HugePages.h"
 
 namespace termshade {
@@ -40,38 +37,42 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
   }
   const size_t triangles = TriangleCount(bytes);
   if (triangles == 0) return LoadError{path, 0, 0, "the file holds no triangles"};
+  if (triangles >= UINT32_MAX / 3)
+    return LoadError{path, 0, 0, "more triangles than 32-bit indices hold"};
 
-  // Step 1: the corners as stored, three float triples a triangle.
-  std::vector<std::array<float, 3>> corners;
-  corners.reserve(triangles * 3);
-  AdviseHugePages(corners);
-  corners.resize(triangles * 3);
-  for (size_t t = 0; t < triangles; ++t) {
-    const char* record = bytes.data() + kFirstRecord + t * kRecordBytes;
-    std::memcpy(corners[t * 3].data(), record + 12, 36);
-  }
-
-  // Step 2: weld bit-identical positions, keeping first-occurrence order;
-  // the remap becomes the faces' corners.
-  static_assert(std::is_same_v<unsigned int, uint32_t>);
+  // Step 1: each corner's first corner with bit-identical coordinates, read
+  // in place from the records (12 bytes a corner, 3 corners a record).
+  const size_t cornerCount = triangles * 3;
+  const char* records = bytes.data() + kFirstRecord;
+  const auto cornerAt = [records](size_t corner) {
+    return records + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
+  };
   Mesh mesh;
   mesh.name = path;
-  mesh.faceCorners.reserve(corners.size());
+  mesh.faceCorners.reserve(cornerCount);
   AdviseHugePages(mesh.faceCorners);
-  mesh.faceCorners.resize(corners.size());
-  const size_t vertexCount =
-      meshopt_generateVertexRemap(mesh.faceCorners.data(), nullptr, corners.size(),
-                                  corners.data(), corners.size(), sizeof corners[0]);
+  mesh.faceCorners.resize(cornerCount);
+  FindFirstOccurrences<12>(cornerCount, cornerAt, mesh.faceCorners.data());
 
-  // Step 3: the vertices, then (the corners freed) one face per triangle in file order.
+  // Step 2: vertices numbered by first occurrence (meshopt_generateVertexRemap's
+  // order); the faces' corners become those numbers.
+  size_t vertexCount = 0;
+  for (size_t i = 0; i < cornerCount; ++i) vertexCount += mesh.faceCorners[i] == i;
   mesh.verticesFile.reserve(vertexCount);
   AdviseHugePages(mesh.verticesFile);
-  mesh.verticesFile.resize(vertexCount);
-  for (size_t i = 0; i < corners.size(); ++i) {
-    const auto& p = corners[i];
-    mesh.verticesFile[mesh.faceCorners[i]] = {p[0], p[1], p[2]};
+  for (size_t i = 0; i < cornerCount; ++i) {
+    uint32_t& corner = mesh.faceCorners[i];
+    if (corner != i) {
+      corner = mesh.faceCorners[corner];  // an earlier corner, already numbered
+      continue;
+    }
+    float xyz[3];
+    std::memcpy(xyz, cornerAt(i), sizeof xyz);
+    corner = static_cast<uint32_t>(mesh.verticesFile.size());
+    mesh.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
   }
-  corners = {};
+
+  // Step 3: one face per triangle in file order.
   mesh.faceStarts.reserve(triangles + 1);
   mesh.edgeHidden.reserve(mesh.faceCorners.size());
   AdviseHugePages(mesh.faceStarts);

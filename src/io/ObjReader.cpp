@@ -1,11 +1,15 @@
 #include "io/ObjReader.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <cstring>
+#include <span>
 #include <vector>
 
 #include "geometry/DropUnusedVertices.h"
 #include "geometry/HugePages.h"
+#include "geometry/LoadThreads.h"
 
 namespace termshade {
 namespace {
@@ -45,6 +49,7 @@ std::string_view Keyword(std::string_view line) {
 
 /// Counts from the first pass: what to allocate, or why the importer should read it.
 struct ObjCounts {
+  uint64_t lines = 0;
   uint64_t vertices = 0;
   uint64_t faces = 0;
   uint64_t corners = 0;  ///< an upper bound: the words of face lines
@@ -68,6 +73,7 @@ uint64_t CountWords(std::string_view line) {
 ObjCounts CountObj(std::string_view text) {
   ObjCounts counts;
   ForEachLine(text, [&counts](const Line& line) {
+    ++counts.lines;
     const std::string_view keyword = Keyword(line.text);
     const bool continued = !line.text.empty() && line.text.back() == '\\';
     if (continued || keyword == "mtllib" || keyword == "usemtl" || keyword == "curv" ||
@@ -136,78 +142,121 @@ class LineCursor {
   size_t position_ = 0;
 };
 
+/// Where one chunk of the file (whole lines) puts what it reads: its
+/// vertices at their final place, the corners of its face and line entries
+/// packed in its own span of the corner buffer, each entry's end in its own
+/// span of the entry buffer (kLineEntry set for `l` lines).
+struct ObjChunk {
+  std::string_view text;
+  ObjCounts counts;
+  uint64_t firstLine = 0;    ///< lines before the chunk
+  uint64_t firstVertex = 0;  ///< vertices defined before the chunk
+  Vec3* vertices = nullptr;
+  uint32_t* corners = nullptr;
+  uint32_t* entryEnds = nullptr;
+  std::optional<LoadError> error;
+};
+
+constexpr uint32_t kLineEntry = uint32_t{1} << 31;
+
 class ObjParser {
  public:
-  ObjParser(const std::string& path, const ObjCounts& counts) : path_(path) {
-    mesh_.name = path;
-    mesh_.verticesFile.reserve(counts.vertices);
-    mesh_.faceStarts.reserve(counts.faces + 1);
-    mesh_.faceCorners.reserve(counts.corners);
-    mesh_.edgeHidden.reserve(counts.corners);
-    AdviseHugePages(mesh_.verticesFile);
-    AdviseHugePages(mesh_.faceStarts);
-    AdviseHugePages(mesh_.faceCorners);
-    AdviseHugePages(mesh_.edgeHidden);
-  }
+  ObjParser(const std::string& path, ObjChunk& chunk) : path_(path), chunk_(chunk) {}
 
   bool Line(const termshade::Line& line) {
     LineCursor cursor(line.text);
     const std::string_view keyword = Keyword(line.text);
     cursor.SkipWord();
     if (keyword == "v") return Vertex(line, cursor);
-    if (keyword == "f" || keyword == "fo" || keyword == "l") return Face(line, cursor);
+    if (keyword == "f" || keyword == "fo") return Entry(line, cursor, 0);
+    if (keyword == "l") return Entry(line, cursor, kLineEntry);
     return true;  // vt, vn, g, o, s, comments and the rest: not geometry we draw
   }
 
-  std::optional<LoadError> Error() const { return error_; }
-  Mesh TakeMesh() { return std::move(mesh_); }
-
  private:
-  bool Fail(const termshade::Line& line, const LineCursor& cursor, std::string message) {
-    error_ = LoadError{path_, line.number, cursor.Column(), std::move(message)};
+  bool Fail(const termshade::Line& line, int column, std::string message) {
+    chunk_.error = LoadError{path_, static_cast<int>(chunk_.firstLine) + line.number, column,
+                             std::move(message)};
     return false;
   }
 
   bool Vertex(const termshade::Line& line, LineCursor& cursor) {
     double xyz[3];
     for (double& coordinate : xyz) {
-      if (!cursor.ReadDouble(coordinate)) return Fail(line, cursor, "expected a number");
+      if (!cursor.ReadDouble(coordinate)) return Fail(line, cursor.Column(), "expected a number");
     }
-    mesh_.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
+    chunk_.vertices[vertices_++] = {xyz[0], xyz[1], xyz[2]};
     return true;
   }
 
-  bool Face(const termshade::Line& line, LineCursor& cursor) {
-    corners_.clear();
-    const auto defined = static_cast<int64_t>(mesh_.verticesFile.size());
+  bool Entry(const termshade::Line& line, LineCursor& cursor, uint32_t kind) {
+    const auto defined = static_cast<int64_t>(chunk_.firstVertex + vertices_);
     while (!cursor.AtEnd()) {
       const int column = cursor.Column();
       int64_t index = 0;
-      if (!cursor.ReadCorner(index)) return Fail(line, cursor, "expected a vertex number");
+      if (!cursor.ReadCorner(index)) return Fail(line, cursor.Column(), "expected a vertex number");
       const int64_t zeroBased = index < 0 ? defined + index : index - 1;
       if (index == 0 || zeroBased < 0 || zeroBased >= defined) {
-        error_ = LoadError{path_, line.number, column,
-                           "vertex " + std::to_string(index) + " is not defined (" +
-                               std::to_string(defined) + " so far)"};
-        return false;
+        return Fail(line, column,
+                    "vertex " + std::to_string(index) + " is not defined (" +
+                        std::to_string(defined) + " so far)");
       }
-      corners_.push_back(static_cast<uint32_t>(zeroBased));
+      chunk_.corners[corners_++] = static_cast<uint32_t>(zeroBased);
     }
-    if (corners_.size() >= 3 && Keyword(line.text) != "l") {
-      mesh_.AddFace(corners_);
-    } else if (corners_.size() >= 2) {
-      for (size_t i = 0; i + 1 < corners_.size(); ++i) {
-        mesh_.segments.push_back({corners_[i], corners_[i + 1]});
-      }
-    }
+    chunk_.entryEnds[entries_++] = static_cast<uint32_t>(corners_) | kind;
     return true;
   }
 
   const std::string& path_;
-  Mesh mesh_;
-  std::vector<uint32_t> corners_;
-  std::optional<LoadError> error_;
+  ObjChunk& chunk_;
+  size_t vertices_ = 0;
+  size_t corners_ = 0;
+  size_t entries_ = 0;
 };
+
+/// The text cut into up to `parts` chunks of whole lines.
+std::vector<std::string_view> SplitAtLines(std::string_view text, size_t parts) {
+  std::vector<std::string_view> chunks;
+  size_t begin = 0;
+  for (size_t part = 1; part <= parts && begin < text.size(); ++part) {
+    size_t end = text.size();
+    if (part < parts) {
+      end = text.find('\n', std::max(begin, text.size() / parts * part));
+      end = end == std::string_view::npos ? text.size() : end + 1;
+    }
+    chunks.push_back(text.substr(begin, end - begin));
+    begin = end;
+  }
+  return chunks;
+}
+
+/// Step 3 of a read: the chunks' entries, in file order, as faces (3 or more
+/// corners) and segments (an `l` line's, or a 2-corner face), the corners
+/// moved down over the spans' unused ends and the dropped entries.
+void MergeChunks(std::span<const ObjChunk> chunks, const std::vector<uint32_t*>& spans,
+                 Mesh& mesh) {
+  size_t written = 0;
+  for (size_t c = 0; c < chunks.size(); ++c) {
+    const uint32_t* corners = spans[c];
+    uint32_t start = 0;
+    for (uint64_t e = 0; e < chunks[c].counts.faces; ++e) {
+      const uint32_t entry = chunks[c].entryEnds[e];
+      const uint32_t end = entry & ~kLineEntry;
+      const uint32_t count = end - start;
+      if (count >= 3 && (entry & kLineEntry) == 0) {
+        std::memmove(mesh.faceCorners.data() + written, corners + start, count * sizeof(uint32_t));
+        written += count;
+        mesh.faceStarts.push_back(static_cast<uint32_t>(written));
+      } else if (count >= 2) {
+        for (uint32_t i = start; i + 1 < end; ++i) {
+          mesh.segments.push_back({corners[i], corners[i + 1]});
+        }
+      }
+      start = end;
+    }
+  }
+  mesh.faceCorners.resize(written);
+}
 
 std::string MemoryBudgetMessage(uint64_t neededBytes, uint64_t budgetBytes) {
   constexpr uint64_t kMiB = uint64_t{1} << 20;
@@ -219,21 +268,76 @@ std::string MemoryBudgetMessage(uint64_t neededBytes, uint64_t budgetBytes) {
 
 std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
                                     size_t memoryBudgetBytes) {
-  // Step 1: counts, and whether the importer is needed.
-  const ObjCounts counts = CountObj(text);
-  if (counts.needsImporter) return std::nullopt;
+  constexpr size_t kBytesPerItem = 64;  // about a line
+  return ReadObjInChunks(text, path, memoryBudgetBytes,
+                         static_cast<size_t>(LoadThreadCount(text.size() / kBytesPerItem)));
+}
+
+std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::string& path,
+                                            size_t memoryBudgetBytes, size_t chunkCount) {
+  // Step 1: chunks of whole lines, one a thread; their counts, and whether the importer is needed.
+  const std::vector<std::string_view> texts = SplitAtLines(text, std::max<size_t>(1, chunkCount));
+  std::vector<ObjChunk> chunks(texts.size());
+  for (size_t c = 0; c < texts.size(); ++c) chunks[c].text = texts[c];
+  RunOnLoadThreads(static_cast<int>(chunks.size()), [&chunks](int c) {
+    chunks[static_cast<size_t>(c)].counts = CountObj(chunks[static_cast<size_t>(c)].text);
+  });
+  ObjCounts counts;
+  for (ObjChunk& chunk : chunks) {
+    if (chunk.counts.needsImporter) return std::nullopt;
+    chunk.firstLine = counts.lines;
+    chunk.firstVertex = counts.vertices;
+    counts.lines += chunk.counts.lines;
+    counts.vertices += chunk.counts.vertices;
+    counts.faces += chunk.counts.faces;
+    counts.corners += chunk.counts.corners;
+  }
   const uint64_t meshBytes = counts.vertices * sizeof(Vec3) +
                              counts.corners * (sizeof(uint32_t) + 1) +
                              counts.faces * sizeof(uint32_t);
   if (meshBytes > memoryBudgetBytes) {
     return Loaded<Mesh>(LoadError{path, 0, 0, MemoryBudgetMessage(meshBytes, memoryBudgetBytes)});
   }
+  if (counts.corners >= kLineEntry || counts.vertices >= UINT32_MAX) {
+    return Loaded<Mesh>(LoadError{path, 0, 0, "more vertices or corners than 32-bit indices hold"});
+  }
 
-  // Step 2: the geometry, line by line.
-  ObjParser parser(path, counts);
-  ForEachLine(text, [&parser](const Line& line) { return parser.Line(line); });
-  if (auto error = parser.Error()) return Loaded<Mesh>(*error);
-  Mesh mesh = parser.TakeMesh();
+  // Step 2: the geometry, each chunk line by line on its own thread.
+  Mesh mesh;
+  mesh.name = path;
+  mesh.verticesFile.reserve(counts.vertices);
+  mesh.faceCorners.reserve(counts.corners);
+  mesh.faceStarts.reserve(counts.faces + 1);
+  AdviseHugePages(mesh.verticesFile);
+  AdviseHugePages(mesh.faceCorners);
+  AdviseHugePages(mesh.faceStarts);
+  mesh.verticesFile.resize(counts.vertices);
+  mesh.faceCorners.resize(counts.corners);
+  std::vector<uint32_t> entryEnds(counts.faces);
+  std::vector<uint32_t*> spans;
+  uint64_t cornersBefore = 0, entriesBefore = 0;
+  for (ObjChunk& chunk : chunks) {
+    chunk.vertices = mesh.verticesFile.data() + chunk.firstVertex;
+    chunk.corners = mesh.faceCorners.data() + cornersBefore;
+    chunk.entryEnds = entryEnds.data() + entriesBefore;
+    spans.push_back(chunk.corners);
+    cornersBefore += chunk.counts.corners;
+    entriesBefore += chunk.counts.faces;
+  }
+  RunOnLoadThreads(static_cast<int>(chunks.size()), [&chunks, &path](int c) {
+    ObjChunk& chunk = chunks[static_cast<size_t>(c)];
+    ObjParser parser(path, chunk);
+    ForEachLine(chunk.text, [&parser](const Line& line) { return parser.Line(line); });
+  });
+  for (const ObjChunk& chunk : chunks) {
+    if (chunk.error) return Loaded<Mesh>(*chunk.error);
+  }
+
+  // Step 3: faces and segments in file order.
+  MergeChunks(chunks, spans, mesh);
+  mesh.edgeHidden.reserve(mesh.faceCorners.size());
+  AdviseHugePages(mesh.edgeHidden);
+  mesh.edgeHidden.assign(mesh.faceCorners.size(), 0);
   DropUnusedVertices(mesh);
   if (mesh.FaceCount() == 0) {
     return Loaded<Mesh>(LoadError{path, 0, 0, "the file holds no polygons ('f' lines)"});

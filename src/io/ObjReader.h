@@ -19,7 +19,14 @@ namespace termshade {
 /// anything is allocated. nullopt when the file uses what the importer
 /// decodes and this reader does not (materials, vertex colours, free-form
 /// curves), so the caller hands it to Assimp.
+/// Files of a few MB up are read in chunks of whole lines, one a core.
 std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
                                     size_t memoryBudgetBytes);
+
+/// ReadObj with the text cut into chunkCount chunks of whole lines, each
+/// read on its own thread; the mesh and any error are the same for every
+/// chunkCount (what tests check).
+std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::string& path,
+                                            size_t memoryBudgetBytes, size_t chunkCount);
 
 }  // namespace termshade

@@ -1,6 +1,5 @@
 #include "io/OwnReaders.h"
 
-#include "geometry/FirstUseOrder.h"
 #include "geometry/WeldVertices.h"
 #include "io/BinaryStlReader.h"
 #include "io/ObjReader.h"
@@ -31,8 +30,7 @@ std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std:
   mesh.name = displayName;
   mesh.upAxisFile = format == "stl" ? UpAxis::kPlusZ : UpAxis::kPlusY;
   if (format != "stl") {  // the STL reader welds as it reads, in first-use order
-    WeldExactPositions(mesh);
-    NumberVerticesByFirstUse(mesh);
+    WeldAndNumberByFirstUse(mesh);
   }
   return read;
 }

@@ -1,5 +1,6 @@
 #include "io/PlyReader.h"
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cstdint>
@@ -186,6 +187,13 @@ class DataCursor {
   }
   int Line() const { return line_; }
   size_t Offset() const { return offset_; }
+  /// The unread bytes of a little-endian binary file (empty for other encodings).
+  std::string_view RestLittleEndian() const {
+    const bool little =
+        encoding_ == Encoding::kLittleEndian && std::endian::native == std::endian::little;
+    return little ? data_.substr(offset_) : std::string_view{};
+  }
+  void Skip(size_t bytes) { offset_ += bytes; }
 
  private:
   template <typename T>
@@ -246,6 +254,33 @@ class DataCursor {
   size_t offset_ = 0;
   int line_ = 1;
 };
+
+// A little-endian binary scalar as a double, as DataCursor reads it.
+double ScalarAt(const char* bytes, ScalarType type) {
+  const auto as = [bytes]<typename T>(T typed) {
+    std::memcpy(&typed, bytes, sizeof typed);
+    return static_cast<double>(typed);
+  };
+  switch (type) {
+    case ScalarType::kInt8:
+      return as(int8_t{});
+    case ScalarType::kUint8:
+      return as(uint8_t{});
+    case ScalarType::kInt16:
+      return as(int16_t{});
+    case ScalarType::kUint16:
+      return as(uint16_t{});
+    case ScalarType::kInt32:
+      return as(int32_t{});
+    case ScalarType::kUint32:
+      return as(uint32_t{});
+    case ScalarType::kFloat32:
+      return as(float{});
+    case ScalarType::kFloat64:
+      return as(double{});
+  }
+  return 0.0;
+}
 
 bool IsColourName(std::string_view name) {
   return name == "red" || name == "green" || name == "blue" || name == "diffuse_red" ||
@@ -312,6 +347,35 @@ int PropertyIndex(const Element& element, std::string_view name) {
   return -1;
 }
 
+// Fast path of ReadVertices: little-endian binary vertices without lists, all
+// of them in the file (else false, nothing read, and the general path reads
+// them and reports where the file ends).
+bool ReadFixedVertices(const Element& element, const int xyz[3], Reader& reader) {
+  const std::string_view rest = reader.cursor.RestLittleEndian();
+  size_t stride = 0;
+  size_t offsets[3] = {0, 0, 0};
+  for (size_t p = 0; p < element.properties.size(); ++p) {
+    const Property& property = element.properties[p];
+    if (property.isList) return false;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (static_cast<int>(p) == xyz[axis]) offsets[axis] = stride;
+    }
+    stride += ScalarBytes(property.type);
+  }
+  if (rest.empty() || stride == 0 || element.count > rest.size() / stride) return false;
+  const ScalarType types[3] = {element.properties[static_cast<size_t>(xyz[0])].type,
+                               element.properties[static_cast<size_t>(xyz[1])].type,
+                               element.properties[static_cast<size_t>(xyz[2])].type};
+  for (uint64_t v = 0; v < element.count; ++v) {
+    const char* record = rest.data() + v * stride;
+    reader.mesh.verticesFile[v] = {ScalarAt(record + offsets[0], types[0]),
+                                   ScalarAt(record + offsets[1], types[1]),
+                                   ScalarAt(record + offsets[2], types[2])};
+  }
+  reader.cursor.Skip(element.count * stride);
+  return true;
+}
+
 std::optional<LoadError> ReadVertices(const Element& element, Reader& reader) {
   const int xyz[3] = {PropertyIndex(element, "x"), PropertyIndex(element, "y"),
                       PropertyIndex(element, "z")};
@@ -321,6 +385,7 @@ std::optional<LoadError> ReadVertices(const Element& element, Reader& reader) {
   reader.mesh.verticesFile.reserve(element.count);
   AdviseHugePages(reader.mesh.verticesFile);
   reader.mesh.verticesFile.resize(element.count);
+  if (ReadFixedVertices(element, xyz, reader)) return std::nullopt;
   for (uint64_t v = 0; v < element.count; ++v) {
     double coordinates[3] = {0, 0, 0};
     for (size_t p = 0; p < element.properties.size(); ++p) {
@@ -344,6 +409,50 @@ std::optional<LoadError> ReadVertices(const Element& element, Reader& reader) {
   return std::nullopt;
 }
 
+// Fast path of ReadFaces: little-endian binary faces whose one property is
+// a list of 3 or more 32-bit indices with a uint8 count. Reads faces while
+// they are whole and every index names a vertex; returns how many it read,
+// and the general path goes on from there (with whatever is wrong there).
+uint64_t ReadPlainFaces(const Element& element, Reader& reader) {
+  if (element.properties.size() != 1) return 0;
+  const Property& list = element.properties[0];
+  if (!list.isList || list.countType != ScalarType::kUint8 ||
+      (list.type != ScalarType::kInt32 && list.type != ScalarType::kUint32)) {
+    return 0;
+  }
+  const std::string_view rest = reader.cursor.RestLittleEndian();
+  // int32 indices from 2^31 up are negative: the general path refuses them.
+  const uint64_t named =
+      list.type == ScalarType::kInt32
+          ? std::min<uint64_t>(reader.mesh.verticesFile.size(), uint64_t{1} << 31)
+          : reader.mesh.verticesFile.size();
+  Mesh& mesh = reader.mesh;
+  size_t at = 0;
+  uint64_t f = 0;
+  for (; f < element.count && at < rest.size(); ++f) {
+    const size_t count = static_cast<uint8_t>(rest[at]);
+    if (count < 3 || rest.size() - at - 1 < count * 4) break;
+    const char* indices = rest.data() + at + 1;
+    bool allNamed = true;
+    for (size_t i = 0; i < count; ++i) {
+      uint32_t index;
+      std::memcpy(&index, indices + i * 4, 4);
+      allNamed = allNamed && index < named;
+    }
+    if (!allNamed) break;
+    for (size_t i = 0; i < count; ++i) {
+      uint32_t index;
+      std::memcpy(&index, indices + i * 4, 4);
+      mesh.faceCorners.push_back(index);
+      mesh.edgeHidden.push_back(0);
+    }
+    mesh.faceStarts.push_back(static_cast<uint32_t>(mesh.faceCorners.size()));
+    at += 1 + count * 4;
+  }
+  reader.cursor.Skip(at);
+  return f;
+}
+
 std::optional<LoadError> ReadFaces(const Element& element, Reader& reader) {
   int indices = PropertyIndex(element, "vertex_indices");
   if (indices < 0) indices = PropertyIndex(element, "vertex_index");
@@ -358,7 +467,8 @@ std::optional<LoadError> ReadFaces(const Element& element, Reader& reader) {
   AdviseHugePages(reader.mesh.faceCorners);
   AdviseHugePages(reader.mesh.edgeHidden);
   std::vector<uint32_t> corners;
-  for (uint64_t f = 0; f < element.count; ++f) {
+  const uint64_t fastFaces = ReadPlainFaces(element, reader);
+  for (uint64_t f = fastFaces; f < element.count; ++f) {
     for (size_t p = 0; p < element.properties.size(); ++p) {
       const Property& property = element.properties[p];
       double count = 1.0;

@@ -1,24 +1,27 @@
 #!/usr/bin/env bash
 # Builds the fuzzers (clang, ASan, UBSan) and runs them for SECONDS in total
 # (default 60), split between them: the .dat reader and pipeline (dat_fuzzer),
-# and the Assimp path of the model loader (model_fuzzer: OBJ, PLY, STL, OFF,
-# glTF, GLB, COLLADA, unnamed content), each from a seed corpus of our files.
+# the Assimp path of the model loader (model_fuzzer: OBJ, PLY, STL, OFF,
+# glTF, GLB, COLLADA, unnamed content) and our readers against their plain
+# forms (reader_fuzzer), each from a seed corpus of our files.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
-datSeconds=$((seconds / 2))
-modelSeconds=$((seconds - datSeconds))
+datSeconds=$((seconds / 3))
+readerSeconds=$((seconds / 3))
+modelSeconds=$((seconds - datSeconds - readerSeconds))
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir "$work/dat" "$work/model"
+mkdir "$work/dat" "$work/model" "$work/reader"
 cp data/*.dat tests/models/good/*.dat tests/models/bad/*.dat "$work/dat"/
 # Model seeds: the first byte picks the format (index into model_fuzzer's kNames).
 seed() {  # seed INDEX FILE
   { printf "\\x$(printf %02x "$1")"; head -c 4000 "$2"; } >"$work/model/$(basename "$2").$1"
 }
 for f in tests/models/good/*.obj tests/models/bad/*.obj; do seed 0 "$f"; done
+cp "$work/model"/* "$work/reader"/  # reader_fuzzer: OBJ text after a chunk-count byte
 for f in tests/models/bad/*.ply; do seed 1 "$f"; done
 for f in tests/models/bad/*.off; do seed 3 "$f"; done
 for f in tests/models/bad/*.gltf; do seed 4 "$f"; done
@@ -30,3 +33,4 @@ run() {  # run FUZZER SECONDS CORPUS
 }
 run dat_fuzzer "$datSeconds" "$work/dat"
 run model_fuzzer "$modelSeconds" "$work/model"
+run reader_fuzzer "$readerSeconds" "$work/reader"

@@ -73,4 +73,20 @@ std::string FrameText(Mesh mesh) {
   return RenderFrame(scene, 0.3, 1.3, 80, 24, RenderOptions{}).Text();
 }
 
+std::string ReadResultText(std::optional<Loaded<Mesh>> read) {
+  if (!read) return "(importer)";
+  if (!read->Ok()) return read->Error().ToString();
+  const Mesh& mesh = read->Value();
+  std::string text;
+  for (const Vec3& p : mesh.verticesFile) {
+    text += std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.z) + " ";
+  }
+  for (const uint32_t c : mesh.faceCorners) text += std::to_string(c) + ",";
+  for (const uint32_t f : mesh.faceStarts) text += std::to_string(f) + ";";
+  for (const auto& g : mesh.segments)
+    text += std::to_string(g[0]) + "-" + std::to_string(g[1]) + " ";
+  for (const uint8_t h : mesh.edgeHidden) text += static_cast<char>('0' + h);
+  return text;
+}
+
 }  // namespace termshade::test

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/Camera.h"
 #include "geometry/Scene.h"
+#include "io/LoadError.h"
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
 #include "raster/RenderOptions.h"
@@ -37,6 +39,10 @@ struct Frame {
 
 /// The default 80x24 text frame of a mesh taken as z-up, for comparing two readings of one file.
 std::string FrameText(Mesh mesh);
+
+/// A reader's result as text: the mesh's vertices, faces, segments and edge
+/// flags, or the error message, or "(importer)" for nullopt; equal texts, equal results.
+std::string ReadResultText(std::optional<Loaded<Mesh>> read);
 
 /// Renders a scene as `termshade render` would (default distance when rho <= 0).
 Frame RenderFrame(const Scene& scene, double theta, double phi, int widthCells, int heightCells,
