@@ -18,6 +18,7 @@
 #include "cli/HelpText.h"
 #include "cli/RenderCommand.h"
 #include "geometry/Angle.h"
+#include "geometry/HeapPolicy.h"
 #include "geometry/UpAxis.h"
 #include "io/LoadBudget.h"
 #include "io/LoadError.h"
@@ -432,6 +433,7 @@ int Run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  termshade::KeepFreedMemoryForReuse();
   try {
     return Run(argc, argv);
   } catch (const std::exception& e) {

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "geometry/HeapPolicy.h"
 #include "io/LoadError.h"
 #include "raster/DetailPick.h"
 #include "raster/Renderer.h"
@@ -149,6 +150,7 @@ class EventLoop {
     Loaded<Scene> scene = job_->Take();
     job_.reset();
     state_.FinishLoad(jobRequest_, std::move(scene));
+    ReturnFreedMemory();  // the replaced model's pages, kept for reuse while loading
     dirty_ = true;
   }
 
