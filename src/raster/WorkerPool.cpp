@@ -1,34 +1,14 @@
 #include "raster/WorkerPool.h"
 
-#include <algorithm>
-
-#include <csignal>
-
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-#if defined(__linux__)
-#include <pthread.h>
-#include <sched.h>
-#endif
+#include "geometry/ThreadStart.h"
 
 namespace termshade {
 
 WorkerPool::WorkerPool(int workers) {
-#if defined(__GLIBC__)
-  // One malloc arena for every thread: a worker's own arena, once it shrinks,
-  // makes glibc read /proc/sys/vm/overcommit_memory, a file outside the
-  // model's folder (tests/models/corpus_check.sh); the workers allocate only
-  // while their bins grow, so sharing the arena costs nothing measurable.
-  mallopt(M_ARENA_MAX, 1);
-#endif
-  // The workers take no signals (they inherit this mask): the viewer's
-  // SIGWINCH and SIGINT stay with the thread that waits for input.
-  sigset_t all, previous;
-  sigfillset(&all);
-  pthread_sigmask(SIG_SETMASK, &all, &previous);
+  // Workers inherit no signals; all threads share one arena (the workers
+  // allocate only while their bins grow, so sharing costs nothing measurable).
+  const QuietThreadStart quiet;
   for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { Loop(w); });
-  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
 }
 
 WorkerPool::~WorkerPool() {
@@ -79,17 +59,7 @@ void WorkerPool::Loop(int worker) {
 }
 
 int ResolvedThreadCount(int requested) {
-  if (requested > 0) return requested;
-#if defined(__linux__)
-  // The cores this process may run on, by a system call: hardware_concurrency
-  // reads /sys, a file outside the model's folder (tests/models/corpus_check.sh).
-  cpu_set_t cores;
-  CPU_ZERO(&cores);
-  if (sched_getaffinity(0, sizeof(cores), &cores) == 0) return std::max(1, CPU_COUNT(&cores));
-  return 1;
-#else
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-#endif
+  return requested > 0 ? requested : UsableCores();
 }
 
 }  // namespace termshade

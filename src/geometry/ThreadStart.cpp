@@ -1,0 +1,33 @@
+#include "geometry/ThreadStart.h"
+
+#include <pthread.h>
+#include <sched.h>
+
+#include <algorithm>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+namespace termshade {
+
+int UsableCores() {
+  cpu_set_t cores;
+  CPU_ZERO(&cores);
+  if (sched_getaffinity(0, sizeof(cores), &cores) != 0) return 1;
+  return std::max(1, CPU_COUNT(&cores));
+}
+
+QuietThreadStart::QuietThreadStart() {
+#if defined(__GLIBC__)
+  mallopt(M_ARENA_MAX, 1);
+#endif
+  sigset_t all;
+  sigfillset(&all);
+  pthread_sigmask(SIG_SETMASK, &all, &previousMask_);
+}
+
+QuietThreadStart::~QuietThreadStart() {
+  pthread_sigmask(SIG_SETMASK, &previousMask_, nullptr);
+}
+
+}  // namespace termshade
