@@ -1,12 +1,14 @@
 #include "cli/HelpText.h"
 
 #include <algorithm>
+#include <exception>
 #include <iostream>
 #include <vector>
 
 #include "cli/CommandModel.h"
 #include "cli/Completions.h"
 #include "cli/ManPage.h"
+#include "io/LoadError.h"
 #include "io/ModelExtensions.h"
 #include "tui/ViewerKeys.h"
 
@@ -165,7 +167,17 @@ void SetUpHelp(CLI::App& app, const std::string& version, std::string& generateW
 
 int RunGenerate(const CLI::App& app, const std::string& version, const std::string& what) {
   const CommandModel root = DescribeCommand(app);
-  const std::vector<std::string> extensions = ModelFileExtensions();
+  std::vector<std::string> extensions;
+  if (what != "commands") {
+    // The man page and completions list Assimp's formats: they need its module.
+    try {
+      extensions = ModelFileExtensions();
+    } catch (const std::exception& e) {
+      std::cerr << "termshade: --generate " << what << ": " << SanitizeForTerminal(e.what())
+                << "\n";
+      return 1;
+    }
+  }
   if (what == "man") WriteManPage(root, version, extensions, std::cout);
   if (what == "bash") WriteBashCompletion(root, extensions, std::cout);
   if (what == "zsh") WriteZshCompletion(root, extensions, std::cout);

@@ -66,6 +66,15 @@ run_alone "$work/cube.off"
 clean_error "without the module" "the Assimp import module termshade-assimp.so is missing" $?
 expect "without the module: says where it looked" grep -qF "$work/alone/bin/termshade-assimp.so" "$work/err"
 
+# The man page and completions list Assimp's formats: without the module, a clean error.
+for what in man bash; do
+  "$work/alone/bin/termshade" --generate "$what" >"$work/out" 2>"$work/err" </dev/null
+  code=$?
+  expect "--generate $what without the module: exit 1 (got $code)" test "$code" -eq 1
+  expect "--generate $what without the module: names it" grep -qF "termshade-assimp.so" "$work/err"
+  expect "--generate $what without the module: no output" test ! -s "$work/out"
+done
+
 # Not a shared object; a shared object that is not ours.
 printf 'not an ELF file\n' >"$work/alone/bin/termshade-assimp.so"
 run_alone "$work/cube.off"
