@@ -1,15 +1,23 @@
 #include "tui/DetailJob.h"
 
+#include "geometry/HeapPolicy.h"
+
 namespace termshade {
 
 DetailJob::DetailJob(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), shared_(std::make_shared<Shared>()) {
-  worker_ = StartWorkerThread([shared = shared_, scene = scene_] {
+  worker_ = StartWorkerThread([shared = shared_, scene = scene_]() mutable {
     DetailBuildOptions options;
     options.cancel = &shared->cancel;
     shared->result = std::make_shared<const DetailLevels>(BuildDetailLevels(*scene, options));
     shared->finished.store(true);
     shared->ready.Notify();
+    // Abandoned (see ~DetailJob): nobody takes the levels; the scene may be the last reference.
+    if (shared->cancel.load()) {
+      shared->result.reset();
+      scene.reset();
+      ReturnFreedMemory();
+    }
   });
 }
 
@@ -21,10 +29,12 @@ std::shared_ptr<const DetailLevels> DetailJob::Take() {
 
 DetailJob::~DetailJob() {
   if (!worker_.joinable()) return;
+  // Cancel before looking at finished, as the worker sets finished before looking at cancel:
+  // one of the two sees the other's store, so an abandoned worker always returns its memory.
+  shared_->cancel.store(true);
   if (Finished()) {
     worker_.join();
   } else {
-    shared_->cancel.store(true);
     worker_.detach();  // it holds its own references to the scene and the shared state
   }
 }

@@ -1,5 +1,6 @@
 #include "tui/LoadJob.h"
 
+#include "geometry/HeapPolicy.h"
 #include "io/ModelLoader.h"
 #include "tui/ViewerState.h"
 
@@ -17,9 +18,10 @@ LoadJob::LoadJob(std::string path, std::optional<UpAxis> upAxis, size_t memoryBu
 LoadJob::LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis upAxis)
     : path_(std::move(path)), shared_(std::make_shared<Shared>()) {
   shared_->preparing.store(true);
-  worker_ = StartWorkerThread([shared = shared_, scene = std::move(scene), upAxis] {
+  worker_ = StartWorkerThread([shared = shared_, scene = std::move(scene), upAxis]() mutable {
     Mesh mesh = scene->SourceMesh();  // the shown scene stays whole until the new one replaces it
     shared->result.emplace(PrepareScene(std::move(mesh), upAxis));
+    scene.reset();
     Finish(*shared);
   });
 }
@@ -42,6 +44,11 @@ void LoadJob::Load(Shared& shared, const std::string& path, std::optional<UpAxis
 void LoadJob::Finish(Shared& shared) {
   shared.finished.store(true);
   shared.ready.Notify();
+  // Abandoned (see ~LoadJob): nobody takes the result, so its memory goes back now.
+  if (shared.cancel.load()) {
+    shared.result.reset();
+    ReturnFreedMemory();
+  }
 }
 
 Loaded<Scene> LoadJob::Take() {
@@ -55,10 +62,12 @@ Loaded<Scene> LoadJob::Take() {
 
 LoadJob::~LoadJob() {
   if (!worker_.joinable()) return;
+  // Cancel before looking at finished, as Finish sets finished before looking at cancel:
+  // one of the two sees the other's store, so an abandoned worker always returns its memory.
+  Cancel();
   if (Finished()) {
     worker_.join();
   } else {
-    Cancel();
     worker_.detach();  // it holds its own reference to the shared state
   }
 }

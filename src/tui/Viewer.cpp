@@ -160,6 +160,7 @@ class EventLoop {
     if (detailJob_ && detailJob_->ForScene() != state_.SharedScene()) {
       detailJob_.reset();
       abandonedLoad_ = true;  // a cancelled build may still be running
+      ReturnFreedMemory();    // a finished one held the replaced scene until now
     }
     if (detailJob_ && detailJob_->Finished()) {
       state_.SetLevels(detailJob_->ForScene(), detailJob_->Take());
@@ -176,6 +177,7 @@ class EventLoop {
     cancelledName_ = name;
     abandonedLoad_ = abandonedLoad_ || job_->Abandoned();
     job_.reset();  // asks the loader to stop; its result, if any, is dropped
+    ReturnFreedMemory();
     state_.SetMessage("cancelled loading " + name);
     dirty_ = true;
   }

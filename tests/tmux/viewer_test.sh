@@ -231,6 +231,17 @@ fi
 wait_for '^up axis [-+][xyz] ' 30 >/dev/null && pass || fail "u on a big model: never turned"
 tm send-keys -t v '?'  # closes the help
 wait_for '\? help' 5 >/dev/null
+# Opening a small model after the big one hands the big one's pages back to
+# the system (the heap keeps freed memory for reuse while loading).
+viewer_rss_kib() { awk '/^VmRSS:/ { print $2 }' "/proc/$(pgrep -P "$(tm list-panes -t v -F '#{pane_pid}')" | head -n 1)/status"; }
+big_rss=$(viewer_rss_kib)
+at_prompt "$src/data/cube.dat"
+wait_for 'opened .*cube\.dat' 10 >/dev/null || fail "cube.dat after the big model did not open"
+settle
+small_rss=$(viewer_rss_kib)
+if [ "${small_rss:-0}" -gt 0 ] && [ "$((small_rss * 3))" -lt "${big_rss:-0}" ]; then pass; else
+  fail "memory after replacing the big model: ${small_rss:-?} KiB, with it ${big_rss:-?} KiB"
+fi
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null || fail "q after the big model"
 # The first model loads with the screen already taken: Esc cancels it (exit
