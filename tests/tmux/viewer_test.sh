@@ -239,7 +239,7 @@ at_prompt "$src/data/cube.dat"
 wait_for 'opened .*cube\.dat' 10 >/dev/null || fail "cube.dat after the big model did not open"
 settle
 small_rss=$(viewer_rss_kib)
-if [ "${small_rss:-0}" -gt 0 ] && [ "$((small_rss * 3))" -lt "${big_rss:-0}" ]; then pass; else
+if [ -n "${TERMSHADE_SANITIZED:-}" ]; then :; elif [ "${small_rss:-0}" -gt 0 ] && [ "$((small_rss * 3))" -lt "${big_rss:-0}" ]; then pass; else
   fail "memory after replacing the big model: ${small_rss:-?} KiB, with it ${big_rss:-?} KiB"
 fi
 tm send-keys -t v q
