@@ -11,6 +11,11 @@ namespace termshade {
 /// ranges under 4 MiB and where the kernel declines.
 void AdviseHugePages(void* data, size_t bytes);
 
+/// Hands the whole pages inside [data, data + bytes) back to the kernel
+/// (MADV_DONTNEED): memory still allocated but no longer read, such as the
+/// part of a file already parsed. They read as zeros if touched again.
+void ReleasePages(void* data, size_t bytes);
+
 /// The same for a vector's whole capacity (reserve first, then fill).
 template <typename T>
 void AdviseHugePages(std::vector<T>& values) {

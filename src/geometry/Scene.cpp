@@ -54,7 +54,17 @@ FacePlane PlaneOfFace(const std::vector<Vec3>& verticesWorld, const Corners& cor
   return {normal, finite ? Dot(normal, mean) : 0.0};
 }
 
-// The face's triangles, none when a corner is not finite.
+// The explicit face-to-triangle maps, written out once face f is no
+// longer triangle f (faces before it each were their one triangle).
+void MapFacesExplicitly(Scene& scene, size_t face, size_t faceCount) {
+  scene.faceTriangleStarts.reserve(faceCount + 1);
+  scene.triangleFaces.reserve(scene.triangles.capacity());
+  for (uint32_t f = 0; f <= face; ++f) scene.faceTriangleStarts.push_back(f);
+  for (uint32_t f = 0; f < face; ++f) scene.triangleFaces.push_back(f);
+}
+
+// The face's triangles, none when a corner is not finite; the maps between
+// faces and triangles are kept only once they stop being the identity.
 void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
                       std::vector<Vec3>& cornersScratch,
                       std::vector<CornerTriangle>& trianglesScratch) {
@@ -67,11 +77,19 @@ void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
     finite = finite && IsFinite(scene.verticesWorld[v]);
   }
   if (finite) TriangulatePolygon(cornersScratch, trianglesScratch);
-  for (const CornerTriangle& t : trianglesScratch) {
-    scene.triangles.push_back(
-        {{corners[t[0]], corners[t[1]], corners[t[2]]}, static_cast<uint32_t>(face)});
+  const bool explicitMaps = !scene.faceTriangleStarts.empty();
+  if (!explicitMaps && trianglesScratch.size() != 1) {
+    MapFacesExplicitly(scene, face, faces.FaceCount());
   }
-  scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
+  for (const CornerTriangle& t : trianglesScratch) {
+    scene.triangles.push_back({{corners[t[0]], corners[t[1]], corners[t[2]]}});
+    if (!scene.triangleFaces.empty() || !scene.faceTriangleStarts.empty()) {
+      scene.triangleFaces.push_back(static_cast<uint32_t>(face));
+    }
+  }
+  if (!scene.faceTriangleStarts.empty()) {
+    scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
+  }
 }
 
 // Face f of faces is scene triangle f, as Scene::Face gives it back, and no
@@ -82,7 +100,7 @@ bool FacesAreTheTriangles(const Scene& scene, const FaceList& faces) {
   for (size_t f = 0; f < faces.FaceCount(); ++f) {
     const auto& t = scene.triangles[f].vertices;
     const uint32_t* c = faces.corners.data() + 3 * f;
-    if (scene.triangles[f].face != f || t[1] != c[0] || t[2] != c[1] || t[0] != c[2]) {
+    if (scene.TriangleFace(f) != f || t[1] != c[0] || t[2] != c[1] || t[0] != c[2]) {
       return false;
     }
   }
@@ -204,10 +222,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   const size_t faceCount = faces.FaceCount();
   const size_t cornerCount = faces.corners.size();
   scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
-  scene.faceTriangleStarts.reserve(faceCount + 1);
   AdviseHugePages(scene.triangles);
-  AdviseHugePages(scene.faceTriangleStarts);
-  scene.faceTriangleStarts.push_back(0);
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;
   for (size_t face = 0; face < faceCount; ++face) {

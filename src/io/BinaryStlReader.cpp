@@ -31,7 +31,7 @@ bool BinaryStlHasColours(std::string_view bytes) {
   return bytes.substr(0, kHeaderBytes).find("COLOR=") != std::string_view::npos;
 }
 
-Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
+Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std::string* owned) {
   if (!IsBinaryStlLayout(bytes)) {
     return LoadError{path, 0, 0, "not a binary STL (size is not 84 + 50 x triangle count)"};
   }
@@ -52,7 +52,9 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
   mesh.faceCorners.reserve(cornerCount);
   AdviseHugePages(mesh.faceCorners);
   mesh.faceCorners.resize(cornerCount);
-  FindFirstOccurrences<12>(cornerCount, cornerAt, mesh.faceCorners.data());
+  // A closed surface has about one vertex for 6 corners: the table starts
+  // there and grows if the file has more.
+  FindFirstOccurrences<12>(cornerCount, cornerAt, mesh.faceCorners.data(), cornerCount / 5);
 
   // Step 2: vertices numbered by first occurrence (meshopt_generateVertexRemap's
   // order); the faces' corners become those numbers.
@@ -60,7 +62,15 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
   for (size_t i = 0; i < cornerCount; ++i) vertexCount += mesh.faceCorners[i] == i;
   mesh.verticesFile.reserve(vertexCount);
   AdviseHugePages(mesh.verticesFile);
+  // An owned file's records already read are handed back as the vertices grow.
+  constexpr size_t kReleaseBytes = size_t{4} << 20;
+  size_t released = 0;
   for (size_t i = 0; i < cornerCount; ++i) {
+    if (owned != nullptr && i % 3 == 0 && (i / 3) * kRecordBytes >= released + kReleaseBytes) {
+      const size_t readBytes = (i / 3) * kRecordBytes;
+      ReleasePages(owned->data() + kFirstRecord + released, readBytes - released);
+      released = readBytes;
+    }
     uint32_t& corner = mesh.faceCorners[i];
     if (corner != i) {
       corner = mesh.faceCorners[corner];  // an earlier corner, already numbered
@@ -71,6 +81,8 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
     corner = static_cast<uint32_t>(mesh.verticesFile.size());
     mesh.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
   }
+
+  if (owned != nullptr) std::string().swap(*owned);
 
   // Step 3: one face per triangle in file order.
   mesh.faceStarts.reserve(triangles + 1);
