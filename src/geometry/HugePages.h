@@ -16,6 +16,15 @@ void AdviseHugePages(void* data, size_t bytes);
 /// part of a file already parsed. They read as zeros if touched again.
 void ReleasePages(void* data, size_t bytes);
 
+/// Frees a vector or string whose storage came from the heap, handing its
+/// pages back first: the heap keeps freed memory (HeapPolicy.h), and a big
+/// block's hole would stay resident until something fits in it.
+template <typename Container>
+void FreeAndReleasePages(Container& values) {
+  ReleasePages(values.data(), values.capacity() * sizeof(values[0]));
+  Container().swap(values);
+}
+
 /// The same for a vector's whole capacity (reserve first, then fill).
 template <typename T>
 void AdviseHugePages(std::vector<T>& values) {

@@ -200,7 +200,9 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   }
   scene.source.shiftZUp = center;
   scene.source.KeepVerticesFile(scene.upAxis, scene.verticesWorld, mesh.verticesFile);
-  std::vector<Vec3>().swap(mesh.verticesFile);
+  // Freed arrays' pages are handed back here and below: the heap keeps freed
+  // memory for reuse (HeapPolicy.h), and these big holes would stay resident.
+  FreeAndReleasePages(mesh.verticesFile);
   const size_t vertexCount = scene.verticesWorld.size();
 
   // Step 2: inside-out closed parts turned outward, once.
@@ -215,6 +217,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // uses are freed before the triangles and planes take their place.
   const bool convex =
       ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits);
+  adjacency->ReleasePages();
   adjacency.reset();
 
   // Step 4: per-face triangles (a face of n corners gives at most n - 2); the

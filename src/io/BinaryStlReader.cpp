@@ -62,14 +62,20 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std:
   for (size_t i = 0; i < cornerCount; ++i) vertexCount += mesh.faceCorners[i] == i;
   mesh.verticesFile.reserve(vertexCount);
   AdviseHugePages(mesh.verticesFile);
-  // An owned file's records already read are handed back as the vertices grow.
-  constexpr size_t kReleaseBytes = size_t{4} << 20;
-  size_t released = 0;
+  // An owned file's records already read are handed back as the vertices
+  // grow, in whole 2 MiB pages, so what reuses them later faults in huge pages.
+  constexpr uintptr_t kHugePage = uintptr_t{1} << 21;
+  const auto fileAt = [owned](size_t offset) {
+    return reinterpret_cast<uintptr_t>(owned->data()) + offset;
+  };
+  uintptr_t released = owned != nullptr ? (fileAt(0) + kHugePage - 1) & ~(kHugePage - 1) : 0;
   for (size_t i = 0; i < cornerCount; ++i) {
-    if (owned != nullptr && i % 3 == 0 && (i / 3) * kRecordBytes >= released + kReleaseBytes) {
-      const size_t readBytes = (i / 3) * kRecordBytes;
-      ReleasePages(owned->data() + kFirstRecord + released, readBytes - released);
-      released = readBytes;
+    if (owned != nullptr && i % 3 == 0) {
+      const uintptr_t readTo = fileAt(kFirstRecord + (i / 3) * kRecordBytes) & ~(kHugePage - 1);
+      if (readTo >= released + 2 * kHugePage) {
+        ReleasePages(reinterpret_cast<void*>(released), readTo - released);
+        released = readTo;
+      }
     }
     uint32_t& corner = mesh.faceCorners[i];
     if (corner != i) {
@@ -82,7 +88,7 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std:
     mesh.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
   }
 
-  if (owned != nullptr) std::string().swap(*owned);
+  if (owned != nullptr) FreeAndReleasePages(*owned);
 
   // Step 3: one face per triangle in file order.
   mesh.faceStarts.reserve(triangles + 1);

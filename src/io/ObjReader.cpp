@@ -337,7 +337,7 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
   }
 
   // Step 3: faces and segments in file order; an owned file is freed first.
-  if (owned != nullptr) std::string().swap(*owned);
+  if (owned != nullptr) FreeAndReleasePages(*owned);
   MergeChunks(chunks, spans, mesh);
   mesh.edgeHidden.reserve(mesh.faceCorners.size());
   AdviseHugePages(mesh.edgeHidden);

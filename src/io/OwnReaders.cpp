@@ -1,5 +1,6 @@
 #include "io/OwnReaders.h"
 
+#include "geometry/HugePages.h"
 #include "geometry/WeldVertices.h"
 #include "io/BinaryStlReader.h"
 #include "io/ObjReader.h"
@@ -28,7 +29,7 @@ std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std:
   std::optional<Loaded<Mesh>> read =
       ReadByFormat(bytes, format, displayName, memoryBudgetBytes, owned);
   if (!read || !read->Ok()) return read;
-  if (owned != nullptr) std::string().swap(*owned);  // before the weld's tables
+  if (owned != nullptr) FreeAndReleasePages(*owned);  // before the weld's tables
   Mesh& mesh = read->Value();
   mesh.name = displayName;
   mesh.upAxisFile = format == "stl" ? UpAxis::kPlusZ : UpAxis::kPlusY;
