@@ -6,6 +6,7 @@
 #include <cstring>
 #include <vector>
 
+#include "geometry/FaceNormal.h"
 #include "geometry/Scene.h"
 #include "io/SceneGenerators.h"
 
@@ -84,6 +85,23 @@ TEST(SceneFaceMaps, ExplicitForPolygonsAndFacesWithoutTriangles) {
   EXPECT_EQ(mixed.FaceTrianglesBegin(mixed.FaceCount() - 1), mixed.triangles.size());
   EXPECT_EQ(mixed.faceTriangleStarts.size(), mixed.FaceCount() + 1);
   ExpectFaceMapsAgree(mixed);
+}
+
+// The planes, computed over the load threads in ranges of faces, are each
+// face's plane as one loop gives it: no face skipped or given a neighbour's.
+TEST(ScenePlanes, SplitOverThreadsEqualOneLoop) {
+  const Scene scene = PrepareScene(GenerateTriangleSphere(300000), UpAxis::kPlusY);
+  ASSERT_EQ(scene.facePlanesWorld.size(), scene.FaceCount());
+  for (size_t f = 0; f < scene.FaceCount(); ++f) {
+    const auto corners = scene.Face(f);
+    const auto pointAt = [&](size_t i) { return scene.verticesWorld[corners[i]]; };
+    Vec3 mean;
+    for (size_t i = 0; i < corners.size(); ++i) mean = mean + pointAt(i);
+    mean = mean * (1.0 / static_cast<double>(corners.size()));
+    const Vec3 normal = Normalized(NewellNormal(corners.size(), pointAt));
+    const FacePlane expected{normal, Dot(normal, mean)};
+    ASSERT_EQ(std::memcmp(&scene.facePlanesWorld[f], &expected, sizeof expected), 0) << f;
+  }
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "geometry/FaceList.h"
 #include "geometry/FaceNormal.h"
 #include "geometry/HugePages.h"
+#include "geometry/LoadThreads.h"
 #include "geometry/OutwardOrientation.h"
 #include "geometry/Triangulate.h"
 
@@ -237,12 +238,18 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     scene.source.faces = std::move(faces);
   }
 
-  // Step 5: per-face planes.
+  // Step 5: per-face planes, the faces split in ranges over the load threads.
   scene.facePlanesWorld.reserve(faceCount);
   AdviseHugePages(scene.facePlanesWorld);
-  for (size_t face = 0; face < faceCount; ++face) {
-    scene.facePlanesWorld.push_back(PlaneOfFace(scene.verticesWorld, scene.Face(face)));
-  }
+  scene.facePlanesWorld.resize(faceCount);
+  const int threads = LoadThreadCount(faceCount);
+  RunOnLoadThreads(threads, [&scene, faceCount, threads](int part) {
+    const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
+    const size_t end = faceCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
+    for (size_t face = begin; face < end; ++face) {
+      scene.facePlanesWorld[face] = PlaneOfFace(scene.verticesWorld, scene.Face(face));
+    }
+  });
   scene.clusters = BuildClusters(scene);
   scene.convexClosedSolid = convex && !scene.triangles.empty();
   return scene;
