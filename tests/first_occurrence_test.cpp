@@ -61,8 +61,8 @@ void ExpectFirstOccurrencesMatchRemap(const std::vector<std::array<float, 3>>& k
   }
   std::vector<uint32_t> first(count, 12345);
   FindFirstOccurrences<12>(
-      count, [&](size_t i) { return reinterpret_cast<const char*>(keys[i].data()); },
-      first.data(), expectedDistinct);
+      count, [&](size_t i) { return reinterpret_cast<const char*>(keys[i].data()); }, first.data(),
+      expectedDistinct);
   for (size_t i = 0; i < count; ++i) {
     ASSERT_EQ(first[i], firstOfRemap[remap[i]]) << "key " << i << " of " << count;
   }

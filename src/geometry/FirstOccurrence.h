@@ -60,8 +60,8 @@ class FirstOccurrenceTable {
   FirstOccurrenceTable(size_t expectedDistinct, KeyAt keyAt) : keyAt_(keyAt) {
     Allocate(std::bit_ceil(std::max<size_t>(64, expectedDistinct + expectedDistinct / 2)));
     const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
-    seed_ = (reinterpret_cast<uintptr_t>(table_.get()) ^ static_cast<uint64_t>(now)) *
-            kSeedMultiplier;
+    seed_ =
+        (reinterpret_cast<uintptr_t>(table_.get()) ^ static_cast<uint64_t>(now)) * kSeedMultiplier;
   }
 
   uint64_t Hash(const char* key) const { return HashKeyBytes<KeyBytes>(key, seed_); }
@@ -126,8 +126,7 @@ class FirstOccurrenceTable {
 /// one (every thread reads and hashes every key), measured on a 2M-triangle
 /// STL. count must be below 2^32 - 1.
 template <size_t KeyBytes, typename KeyAt>
-void FindFirstOccurrences(size_t count, KeyAt keyAt, uint32_t* first,
-                          size_t expectedDistinct = 0) {
+void FindFirstOccurrences(size_t count, KeyAt keyAt, uint32_t* first, size_t expectedDistinct = 0) {
   if (count == 0) return;
   FirstOccurrenceTable<KeyBytes, KeyAt> table(expectedDistinct == 0 ? count : expectedDistinct,
                                               keyAt);
