@@ -24,7 +24,7 @@ void ReleasePages(void* data, size_t bytes) {
   const uintptr_t first = (begin + pageBytes - 1) & ~(pageBytes - 1);
   const uintptr_t last = (begin + bytes) & ~(pageBytes - 1);
   if (data == nullptr || last <= first) return;
-  madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+  madvise(static_cast<char*>(data) + (first - begin), last - first, MADV_DONTNEED);
 }
 
 }  // namespace termshade

@@ -64,16 +64,19 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std:
   AdviseHugePages(mesh.verticesFile);
   // An owned file's records already read are handed back as the vertices
   // grow, in whole 2 MiB pages, so what reuses them later faults in huge pages.
-  constexpr uintptr_t kHugePage = uintptr_t{1} << 21;
-  const auto fileAt = [owned](size_t offset) {
-    return reinterpret_cast<uintptr_t>(owned->data()) + offset;
+  constexpr size_t kHugePage = size_t{1} << 21;
+  const auto start = owned != nullptr ? reinterpret_cast<uintptr_t>(owned->data()) : 0;
+  // The offset of the last huge-page boundary at or below offset (0 if none).
+  const auto boundaryBelow = [start](size_t offset) -> size_t {
+    const uintptr_t boundary = (start + offset) & ~uintptr_t{kHugePage - 1};
+    return boundary < start ? 0 : boundary - start;
   };
-  uintptr_t released = owned != nullptr ? (fileAt(0) + kHugePage - 1) & ~(kHugePage - 1) : 0;
+  size_t released = boundaryBelow(kHugePage - 1);  // the first boundary
   for (size_t i = 0; i < cornerCount; ++i) {
     if (owned != nullptr && i % 3 == 0) {
-      const uintptr_t readTo = fileAt(kFirstRecord + (i / 3) * kRecordBytes) & ~(kHugePage - 1);
+      const size_t readTo = boundaryBelow(kFirstRecord + (i / 3) * kRecordBytes);
       if (readTo >= released + 2 * kHugePage) {
-        ReleasePages(reinterpret_cast<void*>(released), readTo - released);
+        ReleasePages(owned->data() + released, readTo - released);
         released = readTo;
       }
     }
