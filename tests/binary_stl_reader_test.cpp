@@ -46,6 +46,26 @@ TEST(BinaryStlReader, NumbersVerticesInFirstOccurrenceOrder) {
   }
 }
 
+// Given the file's own string, the reader hands its pages back as it reads
+// (files past 4 MiB) and frees it: the same mesh as from a view, bit for bit.
+TEST(BinaryStlReader, OwnedFileGivesTheSameMeshAndIsFreed) {
+  const Mesh sphere = GenerateTriangleSphere(300000);
+  std::string owned = ExportMesh(sphere, ExportFormat::kStl);
+  ASSERT_GT(owned.size(), size_t{8} << 20);
+  const std::string copy = owned;
+  Loaded<Mesh> fromView = ReadBinaryStl(copy, "sphere.stl");
+  Loaded<Mesh> fromOwned = ReadBinaryStl(owned, "sphere.stl", &owned);
+  ASSERT_TRUE(fromView.Ok() && fromOwned.Ok());
+  EXPECT_TRUE(owned.empty());
+  const Mesh &a = fromView.Value(), &b = fromOwned.Value();
+  EXPECT_EQ(a.faceCorners, b.faceCorners);
+  EXPECT_EQ(a.faceStarts, b.faceStarts);
+  ASSERT_EQ(a.verticesFile.size(), b.verticesFile.size());
+  EXPECT_EQ(std::memcmp(a.verticesFile.data(), b.verticesFile.data(),
+                        a.verticesFile.size() * sizeof(Vec3)),
+            0);
+}
+
 TEST(BinaryStlReader, RefusesAnythingButTheExactLayout) {
   std::string bytes = ExportMesh(GenerateTriangleSphere(200), ExportFormat::kStl);
   EXPECT_FALSE(IsBinaryStlLayout(bytes.substr(0, bytes.size() - 1)));

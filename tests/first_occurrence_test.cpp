@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -34,22 +35,51 @@ std::vector<std::array<float, 3>> RepeatingKeys(size_t count, unsigned seed) {
   return keys;
 }
 
+// Keys of 3 floats with about count / 3 distinct ones: the table must grow
+// many times from a one-key start.
+std::vector<std::array<float, 3>> MostlyDistinctKeys(size_t count, unsigned seed) {
+  std::mt19937 random(seed);
+  std::vector<std::array<float, 3>> keys(count);
+  const auto distinct = static_cast<uint32_t>(std::max<size_t>(1, count / 3));
+  for (auto& key : keys) {
+    const uint32_t k = static_cast<uint32_t>(random()) % distinct;
+    key = {static_cast<float>(k), 0.5F * static_cast<float>(k % 7), -1.0F};
+  }
+  return keys;
+}
+
+// first[i] of every key is the first key bitwise equal to it, as
+// meshoptimizer's remap numbers them, whatever size the table starts at.
+void ExpectFirstOccurrencesMatchRemap(const std::vector<std::array<float, 3>>& keys,
+                                      size_t expectedDistinct) {
+  const size_t count = keys.size();
+  std::vector<unsigned int> remap(count);
+  meshopt_generateVertexRemap(remap.data(), nullptr, count, keys.data(), count, sizeof keys[0]);
+  std::vector<uint32_t> firstOfRemap(count, UINT32_MAX);
+  for (size_t i = 0; i < count; ++i) {
+    if (firstOfRemap[remap[i]] == UINT32_MAX) firstOfRemap[remap[i]] = static_cast<uint32_t>(i);
+  }
+  std::vector<uint32_t> first(count, 12345);
+  FindFirstOccurrences<12>(
+      count, [&](size_t i) { return reinterpret_cast<const char*>(keys[i].data()); }, first.data(),
+      expectedDistinct);
+  for (size_t i = 0; i < count; ++i) {
+    ASSERT_EQ(first[i], firstOfRemap[remap[i]]) << "key " << i << " of " << count;
+  }
+}
+
+TEST(FirstOccurrence, GrowingTableMatchesMeshoptimizersRemap) {
+  for (const size_t count : {1UL, 100UL, 5000UL, 300000UL}) {
+    for (const size_t expectedDistinct : {1UL, 64UL, count}) {
+      ExpectFirstOccurrencesMatchRemap(MostlyDistinctKeys(count, static_cast<unsigned>(count)),
+                                       expectedDistinct);
+    }
+  }
+}
+
 TEST(FirstOccurrence, MatchesMeshoptimizersRemap) {
   for (const size_t count : {1UL, 7UL, 300UL, 100000UL}) {
-    const auto keys = RepeatingKeys(count, static_cast<unsigned>(count));
-    std::vector<unsigned int> remap(count);
-    meshopt_generateVertexRemap(remap.data(), nullptr, count, keys.data(), count, sizeof keys[0]);
-    std::vector<uint32_t> firstOfRemap(count, UINT32_MAX);
-    for (size_t i = 0; i < count; ++i) {
-      if (firstOfRemap[remap[i]] == UINT32_MAX) firstOfRemap[remap[i]] = static_cast<uint32_t>(i);
-    }
-    std::vector<uint32_t> first(count, 12345);
-    FindFirstOccurrences<12>(
-        count, [&](size_t i) { return reinterpret_cast<const char*>(keys[i].data()); },
-        first.data());
-    for (size_t i = 0; i < count; ++i) {
-      ASSERT_EQ(first[i], firstOfRemap[remap[i]]) << "key " << i << " of " << count;
-    }
+    ExpectFirstOccurrencesMatchRemap(RepeatingKeys(count, static_cast<unsigned>(count)), 0);
   }
 }
 

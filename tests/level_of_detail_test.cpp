@@ -48,7 +48,8 @@ TEST(LevelOfDetail, LevelsAreValidMeshesWithFewerTrianglesEach) {
     previous = scene.triangles.size();
     // Indices in range, one face per triangle, non-degenerate mostly.
     ASSERT_EQ(scene.FaceCount(), scene.triangles.size());
-    ASSERT_EQ(scene.faceTriangleStarts.size(), scene.FaceCount() + 1);
+    ASSERT_TRUE(scene.faceTriangleStarts.empty());  // face f is triangle f
+    ASSERT_TRUE(scene.triangleFaces.empty());
     const Mesh source = scene.SourceMesh();
     ASSERT_EQ(source.FaceCount(), scene.FaceCount());
     ASSERT_EQ(source.verticesFile.size(), scene.verticesWorld.size());
@@ -56,8 +57,8 @@ TEST(LevelOfDetail, LevelsAreValidMeshesWithFewerTrianglesEach) {
     ASSERT_EQ(scene.source.faceColors.size(), scene.FaceCount());
     for (size_t t = 0; t < scene.triangles.size(); ++t) {
       const SceneTriangle& triangle = scene.triangles[t];
-      ASSERT_EQ(triangle.face, t);
-      ASSERT_EQ(scene.faceTriangleStarts[t], t);
+      ASSERT_EQ(scene.TriangleFace(t), t);
+      ASSERT_EQ(scene.FaceTrianglesBegin(t), t);
       for (uint32_t v : triangle.vertices) ASSERT_LT(v, scene.verticesWorld.size());
       ASSERT_LT(level.sourceFaces[t], exact.FaceCount());
       // The colour is the source face's.

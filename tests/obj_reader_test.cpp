@@ -116,6 +116,22 @@ TEST(ObjReader, ChunksGiveTheSameMeshAndErrorAsOneChunk) {
             "m.obj:8:7: vertex -9 is not defined (4 so far)");
 }
 
+// Given its own string, the reader frees it once the geometry is parsed: the
+// same mesh, or the same error, as from a view, for any chunk count.
+TEST(ObjReader, OwnedTextGivesTheSameResultAndIsFreedWhenRead) {
+  const std::string sphere = ExportMesh(GenerateTriangleSphere(20000), ExportFormat::kObj);
+  const std::string bad = sphere + "f 1 2 x\n";
+  for (const std::string* text : {&sphere, &bad}) {
+    const std::string one = test::ReadResultText(ReadObjInChunks(*text, "m.obj", kBudget, 1));
+    for (const size_t chunks : {1UL, 2UL, 7UL}) {
+      std::string owned = *text;
+      EXPECT_EQ(test::ReadResultText(ReadObjInChunks(owned, "m.obj", kBudget, chunks, &owned)),
+                one);
+      EXPECT_EQ(owned.empty(), text == &sphere) << chunks << " chunks";
+    }
+  }
+}
+
 TEST(DropUnusedVertices, KeepsWhatSegmentsUseAndTheOrder) {
   Mesh mesh;
   mesh.verticesFile = {{0, 0, 0}, {5, 5, 5}, {1, 0, 0}, {0, 1, 0}, {6, 6, 6}, {2, 2, 2}};

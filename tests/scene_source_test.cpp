@@ -2,8 +2,11 @@
 // for bit: faces from the triangles, file vertices from world space.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <vector>
 
+#include "geometry/FaceNormal.h"
 #include "geometry/Scene.h"
 #include "io/SceneGenerators.h"
 
@@ -39,6 +42,65 @@ TEST(SceneSource, OffsetDoublesAndPolygonsComeBackExactly) {
   for (size_t v = 0; v < mesh.verticesFile.size(); ++v) {
     const Vec3 p = scene.VertexFile(v);
     EXPECT_EQ(std::memcmp(&p, &mesh.verticesFile[v], sizeof(Vec3)), 0) << v;
+  }
+}
+
+// Every triangle's face, read through the maps, holds it: the face's range
+// of triangles covers triangle t, and the ranges tile the triangles in order.
+void ExpectFaceMapsAgree(const Scene& scene) {
+  ASSERT_EQ(scene.FaceTrianglesBegin(0), 0U);
+  ASSERT_EQ(scene.FaceTrianglesBegin(scene.FaceCount()), scene.triangles.size());
+  for (size_t f = 0; f < scene.FaceCount(); ++f) {
+    ASSERT_LE(scene.FaceTrianglesBegin(f), scene.FaceTrianglesBegin(f + 1));
+    for (uint32_t t = scene.FaceTrianglesBegin(f); t < scene.FaceTrianglesBegin(f + 1); ++t) {
+      ASSERT_EQ(scene.TriangleFace(t), f);
+    }
+  }
+}
+
+TEST(SceneFaceMaps, ImplicitWhenEveryFaceIsOneTriangle) {
+  const Scene scene = PrepareScene(GenerateTriangleSphere(2000), UpAxis::kPlusY);
+  EXPECT_TRUE(scene.faceTriangleStarts.empty());
+  EXPECT_TRUE(scene.triangleFaces.empty());
+  EXPECT_EQ(scene.triangles.size(), scene.FaceCount());
+  ExpectFaceMapsAgree(scene);
+}
+
+TEST(SceneFaceMaps, ExplicitForPolygonsAndFacesWithoutTriangles) {
+  // Polygons from the start.
+  const Scene polygons = PrepareScene(GenerateScene("sphere_cone").value());
+  EXPECT_EQ(polygons.faceTriangleStarts.size(), polygons.FaceCount() + 1);
+  EXPECT_EQ(polygons.triangleFaces.size(), polygons.triangles.size());
+  ExpectFaceMapsAgree(polygons);
+  // Triangles first, then a quad; then a triangle with a non-finite corner (no triangles).
+  Mesh mesh = GenerateTriangleSphere(200);
+  const auto v = static_cast<uint32_t>(mesh.verticesFile.size());
+  mesh.verticesFile.insert(mesh.verticesFile.end(),
+                           {{5, 0, 0}, {6, 0, 0}, {6, 1, 0}, {5, 1, 0}, {NAN, 0, 0}});
+  const std::vector<uint32_t> quad{v, v + 1, v + 2, v + 3}, broken{v, v + 1, v + 4};
+  mesh.AddFace(quad);
+  mesh.AddFace(broken);
+  const Scene mixed = PrepareScene(mesh);
+  EXPECT_EQ(mixed.triangles.size(), mixed.FaceCount());  // 2 for the quad, 0 for the last
+  EXPECT_EQ(mixed.FaceTrianglesBegin(mixed.FaceCount() - 1), mixed.triangles.size());
+  EXPECT_EQ(mixed.faceTriangleStarts.size(), mixed.FaceCount() + 1);
+  ExpectFaceMapsAgree(mixed);
+}
+
+// The planes, computed over the load threads in ranges of faces, are each
+// face's plane as one loop gives it: no face skipped or given a neighbour's.
+TEST(ScenePlanes, SplitOverThreadsEqualOneLoop) {
+  const Scene scene = PrepareScene(GenerateTriangleSphere(300000), UpAxis::kPlusY);
+  ASSERT_EQ(scene.facePlanesWorld.size(), scene.FaceCount());
+  for (size_t f = 0; f < scene.FaceCount(); ++f) {
+    const auto corners = scene.Face(f);
+    const auto pointAt = [&](size_t i) { return scene.verticesWorld[corners[i]]; };
+    Vec3 mean;
+    for (size_t i = 0; i < corners.size(); ++i) mean = mean + pointAt(i);
+    mean = mean * (1.0 / static_cast<double>(corners.size()));
+    const Vec3 normal = Normalized(NewellNormal(corners.size(), pointAt));
+    const FacePlane expected{normal, Dot(normal, mean)};
+    ASSERT_EQ(std::memcmp(&scene.facePlanesWorld[f], &expected, sizeof expected), 0) << f;
   }
 }
 

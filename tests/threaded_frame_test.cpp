@@ -190,7 +190,7 @@ TEST(Clusters, ConeTestIsConservativeAndSkipsTheBackHalf) {
     for (const SceneCluster& cluster : sphere.clusters.clusters) {
       const ClusterFacing facing = FacingOf(cluster, eye);
       for (uint32_t t = cluster.firstTriangle; t < cluster.triangleEnd; ++t) {
-        const bool front = sphere.facePlanesWorld[sphere.triangles[t].face].FacesPoint(eye);
+        const bool front = sphere.facePlanesWorld[sphere.TriangleFace(t)].FacesPoint(eye);
         if (facing == ClusterFacing::kAway) {
           ASSERT_FALSE(front) << "triangle " << t;
         }

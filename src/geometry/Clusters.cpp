@@ -34,7 +34,7 @@ template <typename Visit>
 void ForEachFace(const Scene& scene, const SceneCluster& c, Visit&& visit) {
   uint32_t lastFace = UINT32_MAX;
   for (uint32_t t = c.firstTriangle; t < c.triangleEnd; ++t) {
-    const uint32_t face = scene.triangles[t].face;
+    const uint32_t face = scene.TriangleFace(t);
     if (face == lastFace) continue;
     lastFace = face;
     visit(scene.facePlanesWorld[face]);

@@ -43,6 +43,12 @@ class EdgeAdjacency {
   template <typename Faces>
   EdgeAdjacency(size_t vertexCount, const Faces& faces);
 
+  /// Frees the arrays, their pages handed back (HugePages.h); empty after.
+  void ReleasePages() {
+    FreeAndReleasePages(starts_);
+    FreeAndReleasePages(uses_);
+  }
+
   /// Face edges in all (each undirected edge once per face that has it).
   size_t UseCount() const { return uses_.size(); }
 

@@ -1,6 +1,7 @@
 #include "geometry/HugePages.h"
 
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include <cstdint>
 
@@ -15,6 +16,15 @@ void AdviseHugePages(void* data, size_t bytes) {
   if (last <= first) return;
   // Advice only: where the kernel has no huge pages, the range stays as it was.
   madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+}
+
+void ReleasePages(void* data, size_t bytes) {
+  const auto pageBytes = static_cast<uintptr_t>(sysconf(_SC_PAGESIZE));
+  const auto begin = reinterpret_cast<uintptr_t>(data);
+  const uintptr_t first = (begin + pageBytes - 1) & ~(pageBytes - 1);
+  const uintptr_t last = (begin + bytes) & ~(pageBytes - 1);
+  if (data == nullptr || last <= first) return;
+  madvise(static_cast<char*>(data) + (first - begin), last - first, MADV_DONTNEED);
 }
 
 }  // namespace termshade

@@ -11,6 +11,20 @@ namespace termshade {
 /// ranges under 4 MiB and where the kernel declines.
 void AdviseHugePages(void* data, size_t bytes);
 
+/// Hands the whole pages inside [data, data + bytes) back to the kernel
+/// (MADV_DONTNEED): memory still allocated but no longer read, such as the
+/// part of a file already parsed. They read as zeros if touched again.
+void ReleasePages(void* data, size_t bytes);
+
+/// Frees a vector or string whose storage came from the heap, handing its
+/// pages back first: the heap keeps freed memory (HeapPolicy.h), and a big
+/// block's hole would stay resident until something fits in it.
+template <typename Container>
+void FreeAndReleasePages(Container& values) {
+  ReleasePages(values.data(), values.capacity() * sizeof(values[0]));
+  Container().swap(values);
+}
+
 /// The same for a vector's whole capacity (reserve first, then fill).
 template <typename T>
 void AdviseHugePages(std::vector<T>& values) {

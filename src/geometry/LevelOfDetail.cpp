@@ -53,7 +53,7 @@ Source MakeSource(const Scene& exact) {
   for (size_t t = 0; t < exact.triangles.size(); ++t) {
     for (int corner = 0; corner < 3; ++corner) {
       uint32_t& face = source.vertexFace[source.indices[3 * t + corner]];
-      if (face == kNone) face = exact.triangles[t].face;
+      if (face == kNone) face = exact.TriangleFace(t);
     }
   }
   source.scaleModelUnits =
@@ -106,12 +106,10 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     verticesFile.push_back(exact.VertexFile(v));
   }
 
-  // Step 2: each triangle a face, with its plane and its source face.
+  // Step 2: each triangle a face (the implicit maps), with its plane and its source face.
   const size_t triangleCount = indices.size() / 3;
   scene.triangles.reserve(triangleCount);
   scene.facePlanesWorld.reserve(triangleCount);
-  scene.faceTriangleStarts.reserve(triangleCount + 1);
-  scene.faceTriangleStarts.push_back(0);
   FaceList& faces = scene.source.faces;  // kept: the triangles run {0, 1, 2}
   faces.corners.reserve(indices.size());
   level.sourceFaces.reserve(triangleCount);
@@ -139,10 +137,8 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
       normal = -normal;
       std::tie(sourceFace, agreement) = SourceFace(exact, source, corners, normal);
     }
-    const auto face = static_cast<uint32_t>(scene.triangles.size());
     scene.facePlanesWorld.push_back({normal, Dot(normal, (a + b + c) * (1.0 / 3.0))});
-    scene.triangles.push_back({local, face});
-    scene.faceTriangleStarts.push_back(face + 1);
+    scene.triangles.push_back({local});
     faces.corners.insert(faces.corners.end(), local.begin(), local.end());
     level.sourceFaces.push_back(sourceFace);
     if (coloured) scene.source.faceColors.push_back(exact.source.faceColors[sourceFace]);

@@ -12,6 +12,7 @@
 #include "geometry/FaceList.h"
 #include "geometry/FaceNormal.h"
 #include "geometry/HugePages.h"
+#include "geometry/LoadThreads.h"
 #include "geometry/OutwardOrientation.h"
 #include "geometry/Triangulate.h"
 
@@ -54,7 +55,17 @@ FacePlane PlaneOfFace(const std::vector<Vec3>& verticesWorld, const Corners& cor
   return {normal, finite ? Dot(normal, mean) : 0.0};
 }
 
-// The face's triangles, none when a corner is not finite.
+// The explicit face-to-triangle maps, written out once face f is no
+// longer triangle f (faces before it each were their one triangle).
+void MapFacesExplicitly(Scene& scene, size_t face, size_t faceCount) {
+  scene.faceTriangleStarts.reserve(faceCount + 1);
+  scene.triangleFaces.reserve(scene.triangles.capacity());
+  for (uint32_t f = 0; f <= face; ++f) scene.faceTriangleStarts.push_back(f);
+  for (uint32_t f = 0; f < face; ++f) scene.triangleFaces.push_back(f);
+}
+
+// The face's triangles, none when a corner is not finite; the maps between
+// faces and triangles are kept only once they stop being the identity.
 void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
                       std::vector<Vec3>& cornersScratch,
                       std::vector<CornerTriangle>& trianglesScratch) {
@@ -67,11 +78,19 @@ void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
     finite = finite && IsFinite(scene.verticesWorld[v]);
   }
   if (finite) TriangulatePolygon(cornersScratch, trianglesScratch);
-  for (const CornerTriangle& t : trianglesScratch) {
-    scene.triangles.push_back(
-        {{corners[t[0]], corners[t[1]], corners[t[2]]}, static_cast<uint32_t>(face)});
+  const bool explicitMaps = !scene.faceTriangleStarts.empty();
+  if (!explicitMaps && trianglesScratch.size() != 1) {
+    MapFacesExplicitly(scene, face, faces.FaceCount());
   }
-  scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
+  for (const CornerTriangle& t : trianglesScratch) {
+    scene.triangles.push_back({{corners[t[0]], corners[t[1]], corners[t[2]]}});
+    if (!scene.triangleFaces.empty() || !scene.faceTriangleStarts.empty()) {
+      scene.triangleFaces.push_back(static_cast<uint32_t>(face));
+    }
+  }
+  if (!scene.faceTriangleStarts.empty()) {
+    scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
+  }
 }
 
 // Face f of faces is scene triangle f, as Scene::Face gives it back, and no
@@ -82,7 +101,7 @@ bool FacesAreTheTriangles(const Scene& scene, const FaceList& faces) {
   for (size_t f = 0; f < faces.FaceCount(); ++f) {
     const auto& t = scene.triangles[f].vertices;
     const uint32_t* c = faces.corners.data() + 3 * f;
-    if (scene.triangles[f].face != f || t[1] != c[0] || t[2] != c[1] || t[0] != c[2]) {
+    if (scene.TriangleFace(f) != f || t[1] != c[0] || t[2] != c[1] || t[0] != c[2]) {
       return false;
     }
   }
@@ -182,7 +201,9 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   }
   scene.source.shiftZUp = center;
   scene.source.KeepVerticesFile(scene.upAxis, scene.verticesWorld, mesh.verticesFile);
-  std::vector<Vec3>().swap(mesh.verticesFile);
+  // Freed arrays' pages are handed back here and below: the heap keeps freed
+  // memory for reuse (HeapPolicy.h), and these big holes would stay resident.
+  FreeAndReleasePages(mesh.verticesFile);
   const size_t vertexCount = scene.verticesWorld.size();
 
   // Step 2: inside-out closed parts turned outward, once.
@@ -197,6 +218,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // uses are freed before the triangles and planes take their place.
   const bool convex =
       ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits);
+  adjacency->ReleasePages();
   adjacency.reset();
 
   // Step 4: per-face triangles (a face of n corners gives at most n - 2); the
@@ -204,10 +226,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   const size_t faceCount = faces.FaceCount();
   const size_t cornerCount = faces.corners.size();
   scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
-  scene.faceTriangleStarts.reserve(faceCount + 1);
   AdviseHugePages(scene.triangles);
-  AdviseHugePages(scene.faceTriangleStarts);
-  scene.faceTriangleStarts.push_back(0);
   std::vector<Vec3> cornersScratch;
   std::vector<CornerTriangle> trianglesScratch;
   for (size_t face = 0; face < faceCount; ++face) {
@@ -219,12 +238,18 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     scene.source.faces = std::move(faces);
   }
 
-  // Step 5: per-face planes.
+  // Step 5: per-face planes, the faces split in ranges over the load threads.
   scene.facePlanesWorld.reserve(faceCount);
   AdviseHugePages(scene.facePlanesWorld);
-  for (size_t face = 0; face < faceCount; ++face) {
-    scene.facePlanesWorld.push_back(PlaneOfFace(scene.verticesWorld, scene.Face(face)));
-  }
+  scene.facePlanesWorld.resize(faceCount);
+  const int threads = LoadThreadCount(faceCount);
+  RunOnLoadThreads(threads, [&scene, faceCount, threads](int part) {
+    const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
+    const size_t end = faceCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
+    for (size_t face = begin; face < end; ++face) {
+      scene.facePlanesWorld[face] = PlaneOfFace(scene.verticesWorld, scene.Face(face));
+    }
+  });
   scene.clusters = BuildClusters(scene);
   scene.convexClosedSolid = convex && !scene.triangles.empty();
   return scene;

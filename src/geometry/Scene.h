@@ -15,10 +15,10 @@
 
 namespace termshade {
 
-/// One triangle of a triangulated face: vertex indices and the 0-based face.
+/// One triangle of a triangulated face: vertex indices (its face is
+/// Scene::TriangleFace).
 struct SceneTriangle {
   std::array<uint32_t, 3> vertices{};
-  uint32_t face = 0;
 };
 
 /// A face's plane n . p = offset: the unit Newell normal (zero when the face
@@ -41,8 +41,12 @@ struct Scene {
   size_t facesTurnedOutward = 0;   ///< faces of inside-out closed parts reversed
   std::vector<Vec3> verticesWorld;
   std::vector<SceneTriangle> triangles;
-  std::vector<FacePlane> facePlanesWorld;    ///< per face, world space
-  std::vector<uint32_t> faceTriangleStarts;  ///< FaceCount() + 1 entries into triangles
+  std::vector<FacePlane> facePlanesWorld;  ///< per face, world space
+  /// Where each face's triangles start: FaceCount() + 1 entries into
+  /// triangles; empty when every face is one triangle, face f triangle f.
+  std::vector<uint32_t> faceTriangleStarts;
+  /// Per triangle, its 0-based face; empty when triangle t is face t.
+  std::vector<uint32_t> triangleFaces;
   SceneClusters clusters;  ///< the triangles in runs, for culling whole runs per frame
   SceneSource source;  ///< the rest of the model (closed parts outward), where the arrays lack it
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
@@ -52,6 +56,14 @@ struct Scene {
   bool convexClosedSolid = false;
 
   size_t FaceCount() const { return facePlanesWorld.size(); }
+  /// The face of triangle t.
+  uint32_t TriangleFace(size_t t) const {
+    return triangleFaces.empty() ? static_cast<uint32_t>(t) : triangleFaces[t];
+  }
+  /// The face's triangles are [FaceTrianglesBegin(f), FaceTrianglesBegin(f + 1)).
+  uint32_t FaceTrianglesBegin(size_t face) const {
+    return faceTriangleStarts.empty() ? static_cast<uint32_t>(face) : faceTriangleStarts[face];
+  }
   /// A face's corners (vertex indices), counter-clockwise seen from outside.
   FaceCorners Face(size_t face) const {
     if (!source.faces.corners.empty()) return source.faces.Face(face);

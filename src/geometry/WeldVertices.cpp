@@ -62,6 +62,7 @@ void WeldAndNumberByFirstUse(Mesh& mesh) {
   for (size_t v = 0; v < vertexCount; ++v) {
     if (first[v] == v && newIndex[v] != kUnused) reordered[newIndex[v]] = mesh.verticesFile[v];
   }
+  FreeAndReleasePages(mesh.verticesFile);
   mesh.verticesFile = std::move(reordered);
 }
 

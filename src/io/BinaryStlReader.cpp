@@ -31,7 +31,7 @@ bool BinaryStlHasColours(std::string_view bytes) {
   return bytes.substr(0, kHeaderBytes).find("COLOR=") != std::string_view::npos;
 }
 
-Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
+Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std::string* owned) {
   if (!IsBinaryStlLayout(bytes)) {
     return LoadError{path, 0, 0, "not a binary STL (size is not 84 + 50 x triangle count)"};
   }
@@ -52,7 +52,9 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
   mesh.faceCorners.reserve(cornerCount);
   AdviseHugePages(mesh.faceCorners);
   mesh.faceCorners.resize(cornerCount);
-  FindFirstOccurrences<12>(cornerCount, cornerAt, mesh.faceCorners.data());
+  // A closed surface has about one vertex for 6 corners: the table starts
+  // there and grows if the file has more.
+  FindFirstOccurrences<12>(cornerCount, cornerAt, mesh.faceCorners.data(), cornerCount / 5);
 
   // Step 2: vertices numbered by first occurrence (meshopt_generateVertexRemap's
   // order); the faces' corners become those numbers.
@@ -60,7 +62,24 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
   for (size_t i = 0; i < cornerCount; ++i) vertexCount += mesh.faceCorners[i] == i;
   mesh.verticesFile.reserve(vertexCount);
   AdviseHugePages(mesh.verticesFile);
+  // An owned file's records already read are handed back as the vertices
+  // grow, in whole 2 MiB pages, so what reuses them later faults in huge pages.
+  constexpr size_t kHugePage = size_t{1} << 21;
+  const auto start = owned != nullptr ? reinterpret_cast<uintptr_t>(owned->data()) : 0;
+  // The offset of the last huge-page boundary at or below offset (0 if none).
+  const auto boundaryBelow = [start](size_t offset) -> size_t {
+    const uintptr_t boundary = (start + offset) & ~uintptr_t{kHugePage - 1};
+    return boundary < start ? 0 : boundary - start;
+  };
+  size_t released = boundaryBelow(kHugePage - 1);  // the first boundary
   for (size_t i = 0; i < cornerCount; ++i) {
+    if (owned != nullptr && i % 3 == 0) {
+      const size_t readTo = boundaryBelow(kFirstRecord + (i / 3) * kRecordBytes);
+      if (readTo >= released + 2 * kHugePage) {
+        ReleasePages(owned->data() + released, readTo - released);
+        released = readTo;
+      }
+    }
     uint32_t& corner = mesh.faceCorners[i];
     if (corner != i) {
       corner = mesh.faceCorners[corner];  // an earlier corner, already numbered
@@ -71,6 +90,8 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path) {
     corner = static_cast<uint32_t>(mesh.verticesFile.size());
     mesh.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
   }
+
+  if (owned != nullptr) FreeAndReleasePages(*owned);
 
   // Step 3: one face per triangle in file order.
   mesh.faceStarts.reserve(triangles + 1);

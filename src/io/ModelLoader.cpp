@@ -66,12 +66,14 @@ Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const Mo
   const auto ownNeeds = EstimateOwnReaderBytes(format, bytes.size());
   if (!options.importerOnly && ownNeeds) {
     if (overBudget(*ownNeeds)) return fail(OverBudgetMessage(*ownNeeds, options.memoryBudgetBytes));
-    if (auto mesh =
-            ReadWithOwnReader(bytes, format, place.displayName, options.memoryBudgetBytes)) {
+    // The reader frees the file's bytes once it has read them.
+    const size_t fileBytes = bytes.size();
+    if (auto mesh = ReadWithOwnReader(bytes, format, place.displayName, options.memoryBudgetBytes,
+                                      &bytes)) {
       if (!mesh->Ok()) return std::move(*mesh);
       const Mesh& read = mesh->Value();
       const size_t needed =
-          std::max(*ownNeeds, EstimatePreparedBytes(bytes.size(), read.verticesFile.size(),
+          std::max(*ownNeeds, EstimatePreparedBytes(fileBytes, read.verticesFile.size(),
                                                     read.faceCorners.size(), read.FaceCount()));
       if (overBudget(needed)) return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
       return std::move(*mesh);

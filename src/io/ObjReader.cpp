@@ -145,7 +145,7 @@ class LineCursor {
 /// Where one chunk of the file (whole lines) puts what it reads: its
 /// vertices at their final place, the corners of its face and line entries
 /// packed in its own span of the corner buffer, each entry's end in its own
-/// span of the entry buffer (kLineEntry set for `l` lines).
+/// span of the face starts (kLineEntry set for `l` lines), merged in place.
 struct ObjChunk {
   std::string_view text;
   ObjCounts counts;
@@ -232,10 +232,11 @@ std::vector<std::string_view> SplitAtLines(std::string_view text, size_t parts) 
 
 /// Step 3 of a read: the chunks' entries, in file order, as faces (3 or more
 /// corners) and segments (an `l` line's, or a 2-corner face), the corners
-/// moved down over the spans' unused ends and the dropped entries.
+/// moved down over the spans' unused ends and the dropped entries, the face
+/// ends over the entry ends (each written at or before where it was read).
 void MergeChunks(std::span<const ObjChunk> chunks, const std::vector<uint32_t*>& spans,
                  Mesh& mesh) {
-  size_t written = 0;
+  size_t written = 0, faces = 0;
   for (size_t c = 0; c < chunks.size(); ++c) {
     const uint32_t* corners = spans[c];
     uint32_t start = 0;
@@ -246,7 +247,7 @@ void MergeChunks(std::span<const ObjChunk> chunks, const std::vector<uint32_t*>&
       if (count >= 3 && (entry & kLineEntry) == 0) {
         std::memmove(mesh.faceCorners.data() + written, corners + start, count * sizeof(uint32_t));
         written += count;
-        mesh.faceStarts.push_back(static_cast<uint32_t>(written));
+        mesh.faceStarts[++faces] = static_cast<uint32_t>(written);
       } else if (count >= 2) {
         for (uint32_t i = start; i + 1 < end; ++i) {
           mesh.segments.push_back({corners[i], corners[i + 1]});
@@ -256,6 +257,7 @@ void MergeChunks(std::span<const ObjChunk> chunks, const std::vector<uint32_t*>&
     }
   }
   mesh.faceCorners.resize(written);
+  mesh.faceStarts.resize(faces + 1);
 }
 
 std::string MemoryBudgetMessage(uint64_t neededBytes, uint64_t budgetBytes) {
@@ -267,14 +269,15 @@ std::string MemoryBudgetMessage(uint64_t neededBytes, uint64_t budgetBytes) {
 }  // namespace
 
 std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
-                                    size_t memoryBudgetBytes) {
+                                    size_t memoryBudgetBytes, std::string* owned) {
   constexpr size_t kBytesPerItem = 64;  // about a line
   return ReadObjInChunks(text, path, memoryBudgetBytes,
-                         static_cast<size_t>(LoadThreadCount(text.size() / kBytesPerItem)));
+                         static_cast<size_t>(LoadThreadCount(text.size() / kBytesPerItem)), owned);
 }
 
 std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::string& path,
-                                            size_t memoryBudgetBytes, size_t chunkCount) {
+                                            size_t memoryBudgetBytes, size_t chunkCount,
+                                            std::string* owned) {
   // Step 1: chunks of whole lines, one a thread; their counts, and whether the importer is needed.
   const std::vector<std::string_view> texts = SplitAtLines(text, std::max<size_t>(1, chunkCount));
   std::vector<ObjChunk> chunks(texts.size());
@@ -313,13 +316,13 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
   AdviseHugePages(mesh.faceStarts);
   mesh.verticesFile.resize(counts.vertices);
   mesh.faceCorners.resize(counts.corners);
-  std::vector<uint32_t> entryEnds(counts.faces);
+  mesh.faceStarts.resize(counts.faces + 1);
   std::vector<uint32_t*> spans;
   uint64_t cornersBefore = 0, entriesBefore = 0;
   for (ObjChunk& chunk : chunks) {
     chunk.vertices = mesh.verticesFile.data() + chunk.firstVertex;
     chunk.corners = mesh.faceCorners.data() + cornersBefore;
-    chunk.entryEnds = entryEnds.data() + entriesBefore;
+    chunk.entryEnds = mesh.faceStarts.data() + 1 + entriesBefore;
     spans.push_back(chunk.corners);
     cornersBefore += chunk.counts.corners;
     entriesBefore += chunk.counts.faces;
@@ -333,7 +336,8 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
     if (chunk.error) return Loaded<Mesh>(*chunk.error);
   }
 
-  // Step 3: faces and segments in file order.
+  // Step 3: faces and segments in file order; an owned file is freed first.
+  if (owned != nullptr) FreeAndReleasePages(*owned);
   MergeChunks(chunks, spans, mesh);
   mesh.edgeHidden.reserve(mesh.faceCorners.size());
   AdviseHugePages(mesh.edgeHidden);

@@ -20,13 +20,16 @@ namespace termshade {
 /// decodes and this reader does not (materials, vertex colours, free-form
 /// curves), so the caller hands it to Assimp.
 /// Files of a few MB up are read in chunks of whole lines, one a core.
+/// owned, when given, is the string text views: it is freed (empty) as soon
+/// as the geometry is parsed, before the rest of the mesh is built.
 std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
-                                    size_t memoryBudgetBytes);
+                                    size_t memoryBudgetBytes, std::string* owned = nullptr);
 
 /// ReadObj with the text cut into chunkCount chunks of whole lines, each
 /// read on its own thread; the mesh and any error are the same for every
 /// chunkCount (what tests check).
 std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::string& path,
-                                            size_t memoryBudgetBytes, size_t chunkCount);
+                                            size_t memoryBudgetBytes, size_t chunkCount,
+                                            std::string* owned = nullptr);
 
 }  // namespace termshade

@@ -1,5 +1,6 @@
 #include "io/OwnReaders.h"
 
+#include "geometry/HugePages.h"
 #include "geometry/WeldVertices.h"
 #include "io/BinaryStlReader.h"
 #include "io/ObjReader.h"
@@ -9,13 +10,14 @@ namespace termshade {
 namespace {
 
 std::optional<Loaded<Mesh>> ReadByFormat(std::string_view bytes, const std::string& format,
-                                         const std::string& displayName, size_t memoryBudgetBytes) {
+                                         const std::string& displayName, size_t memoryBudgetBytes,
+                                         std::string* owned) {
   if (format == "stl") {
     if (!IsBinaryStlLayout(bytes) || BinaryStlHasColours(bytes)) return std::nullopt;
-    return ReadBinaryStl(bytes, displayName);
+    return ReadBinaryStl(bytes, displayName, owned);
   }
   if (format == "ply") return ReadPly(bytes, displayName, memoryBudgetBytes);
-  if (format == "obj") return ReadObj(bytes, displayName, memoryBudgetBytes);
+  if (format == "obj") return ReadObj(bytes, displayName, memoryBudgetBytes, owned);
   return std::nullopt;
 }
 
@@ -23,9 +25,11 @@ std::optional<Loaded<Mesh>> ReadByFormat(std::string_view bytes, const std::stri
 
 std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std::string& format,
                                               const std::string& displayName,
-                                              size_t memoryBudgetBytes) {
-  std::optional<Loaded<Mesh>> read = ReadByFormat(bytes, format, displayName, memoryBudgetBytes);
+                                              size_t memoryBudgetBytes, std::string* owned) {
+  std::optional<Loaded<Mesh>> read =
+      ReadByFormat(bytes, format, displayName, memoryBudgetBytes, owned);
   if (!read || !read->Ok()) return read;
+  if (owned != nullptr) FreeAndReleasePages(*owned);  // before the weld's tables
   Mesh& mesh = read->Value();
   mesh.name = displayName;
   mesh.upAxisFile = format == "stl" ? UpAxis::kPlusZ : UpAxis::kPlusY;

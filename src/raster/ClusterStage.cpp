@@ -105,12 +105,13 @@ int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterF
                  bool allFront, const RasterVertex* raster, const uint8_t* codes, int width,
                  int height, Emit&& emit) {
   const SceneTriangle* const triangles = scene.triangles.data();
+  const uint32_t* const faceOf = scene.triangleFaces.empty() ? nullptr : scene.triangleFaces.data();
   const FacePlane* const planes = scene.facePlanesWorld.data();
   int drawn = 0;
   uint32_t lastFace = UINT32_MAX;
   bool front = true;
   for (uint32_t t = cluster.firstTriangle; t < cluster.triangleEnd; ++t) {
-    const uint32_t face = triangles[t].face;
+    const uint32_t face = faceOf != nullptr ? faceOf[t] : t;
     if (!allFront && face != lastFace) {
       lastFace = face;
       front = planes[face].FacesPoint(frame.eyeWorld);

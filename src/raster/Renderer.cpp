@@ -217,7 +217,7 @@ bool Renderer::FaceIsFront(const Scene& scene, uint32_t face) const {
 int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t triangle,
                            DepthRule rule, DepthBuffer& depth, CellBuffer& cells) {
   const SceneTriangle& t = scene.triangles[triangle];
-  const uint32_t faceNumber = t.face + 1;
+  const uint32_t faceNumber = scene.TriangleFace(triangle) + 1;
   const unsigned codes[3] = {outCodes_[t.vertices[0]], outCodes_[t.vertices[1]],
                              outCodes_[t.vertices[2]]};
   // Fast path: wholly inside the near plane and the guard band.
@@ -270,7 +270,7 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const Rende
     painterOrder_.clear();
     for (uint32_t f = 0; f < scene.FaceCount(); ++f) {
       if (cull && !FaceIsFront(scene, f)) continue;
-      for (uint32_t i = scene.faceTriangleStarts[f]; i < scene.faceTriangleStarts[f + 1]; ++i) {
+      for (uint32_t i = scene.FaceTrianglesBegin(f); i < scene.FaceTrianglesBegin(f + 1); ++i) {
         const SceneTriangle& t = scene.triangles[i];
         painterOrder_.emplace_back(
             zEye_[t.vertices[0]] + zEye_[t.vertices[1]] + zEye_[t.vertices[2]], i);
@@ -286,7 +286,8 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const Rende
   const DepthRule rule = SurfaceRule(options);
   // The hot loop: plain pointers, the in-view case inline, the rest out of line.
   const FacePlane* const planes = scene.facePlanesWorld.data();
-  const uint32_t* const starts = scene.faceTriangleStarts.data();
+  const uint32_t* const starts =
+      scene.faceTriangleStarts.empty() ? nullptr : scene.faceTriangleStarts.data();
   const SceneTriangle* const triangles = scene.triangles.data();
   const RasterVertex* const raster = rasterVertices_.data();
   const uint8_t* const codes = outCodes_.data();
@@ -295,7 +296,8 @@ int Renderer::DrawSurfaces(const Scene& scene, const Camera& camera, const Rende
   const uint32_t faceCount = static_cast<uint32_t>(scene.FaceCount());
   for (uint32_t f = 0; f < faceCount; ++f) {
     if (cull && !planes[f].FacesPoint(eyeWorld)) continue;
-    for (uint32_t i = starts[f]; i < starts[f + 1]; ++i) {
+    const uint32_t end = starts != nullptr ? starts[f + 1] : f + 1;
+    for (uint32_t i = starts != nullptr ? starts[f] : f; i < end; ++i) {
       const auto& v = triangles[i].vertices;
       if ((codes[v[0]] | codes[v[1]] | codes[v[2]]) != 0) {
         drawn += DrawTriangle(scene, camera, i, rule, depth, cells);
