@@ -175,8 +175,9 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
   BeginSeenFaces(scene);
   uint32_t previous = 0;
-  for (size_t cell = 0; cell < sampleFrame_.CellCount(); ++cell) {
-    if (!sampleFrame_.Touched(cell)) continue;
+  const size_t cellCount = sampleFrame_.CellCount();
+  for (size_t cell = sampleFrame_.NextTouched(0); cell < cellCount;
+       cell = sampleFrame_.NextTouched(cell + 1)) {
     for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
       MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
     }

@@ -27,6 +27,8 @@ class SampleFrame {
   SampleGrid Grid() const { return grid_; }
   size_t CellCount() const { return touched_.size(); }
   bool Touched(size_t cell) const { return touched_[cell] != 0; }
+  /// The first touched cell at or after `cell` (eight flags a load), or CellCount().
+  size_t NextTouched(size_t cell) const;
 
   /// The cell's samples; valid only for a touched cell.
   std::span<const uint32_t> Faces(size_t cell) const {
