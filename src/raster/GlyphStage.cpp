@@ -162,6 +162,34 @@ void FillBackground(CellBuffer& cells) {
   std::fill(cells.BackIntensities().begin(), cells.BackIntensities().end(), uint8_t{0});
 }
 
+// The glyph and tones of a cell whose samples (or parts) show more than one face.
+template <int N>
+char32_t MixedCell(const CellSamples& s, const RenderOptions& options, SamplePattern all,
+                   const std::array<int16_t, 256>& levelOf, AsciiMatcher& ascii, Tone& fore,
+                   Tone& back) {
+  const GlyphMode mode = options.glyphs;
+  switch (mode) {
+    case GlyphMode::kRamp:
+      fore = ToneOf<N>(s, all);
+      return options.ramp.Glyph(levelOf[fore.intensity]);
+    case GlyphMode::kAscii:
+      fore = ToneOf<N>(s, s.covered);
+      return options.twoColour ? ascii.MatchShape(s.values.data(), s.covered)
+                               : ascii.MatchInk(s.values.data(), s.covered);
+    case GlyphMode::kBraille:
+      fore = ToneOf<N>(s, s.covered);
+      return PatternGlyph(mode, s.covered);
+    default: {  // blocks, quadrants, sextants
+      SamplePattern ink = s.covered;
+      if (options.twoColour) ink = BrighterHalf<N>(s);
+      if (ink == 0) ink = all;
+      fore = ToneOf<N>(s, ink);
+      if (options.twoColour) back = ToneOf<N>(s, all & ~ink);
+      return PatternGlyph(mode, ink);
+    }
+  }
+}
+
 }  // namespace
 
 void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBuffer& cells,
@@ -244,34 +272,17 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
           glyph = PatternGlyph(mode, all);
           break;
       }
+    } else if (!reduce) {
+      glyph = MixedCell<kCount>(fine, options, all, levelOf_, ascii_, fore, back);
     } else {
-      if (reduce) ReduceToParts<kCount>(fine, grid, in.pattern, parts);
-      const CellSamples& s = reduce ? parts : fine;
-      switch (mode) {
-        case GlyphMode::kRamp:
-          fore = reduce ? ToneOf<0>(s, all) : ToneOf<kCount>(s, all);
-          glyph = options.ramp.Glyph(levelOf_[fore.intensity]);
-          break;
-        case GlyphMode::kAscii:
-          fore = reduce ? ToneOf<0>(s, s.covered) : ToneOf<kCount>(s, s.covered);
-          glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
-                                    : ascii_.MatchInk(s.values.data(), s.covered);
-          break;
-        case GlyphMode::kBraille:
-          fore = reduce ? ToneOf<0>(s, s.covered) : ToneOf<kCount>(s, s.covered);
-          glyph = PatternGlyph(mode, s.covered);
-          break;
-        default: {  // blocks, quadrants, sextants
-          SamplePattern ink = s.covered;
-          if (options.twoColour) ink = reduce ? BrighterHalf<0>(s) : BrighterHalf<kCount>(s);
-          if (ink == 0) ink = all;
-          fore = reduce ? ToneOf<0>(s, ink) : ToneOf<kCount>(s, ink);
-          if (options.twoColour) {
-            back = reduce ? ToneOf<0>(s, all & ~ink) : ToneOf<kCount>(s, all & ~ink);
-          }
-          glyph = PatternGlyph(mode, ink);
-          break;
-        }
+      ReduceToParts<kCount>(fine, grid, in.pattern, parts);
+      // The colour blocks' and quadrants' parts; other forced grids at run time.
+      if (parts.count == 2) {
+        glyph = MixedCell<2>(parts, options, all, levelOf_, ascii_, fore, back);
+      } else if (parts.count == 4) {
+        glyph = MixedCell<4>(parts, options, all, levelOf_, ascii_, fore, back);
+      } else {
+        glyph = MixedCell<0>(parts, options, all, levelOf_, ascii_, fore, back);
       }
     }
     cells.Glyphs()[index] = glyph;

@@ -48,6 +48,8 @@ class SampleFrame {
     }
   }
   uint32_t* FaceData() { return faces_.data(); }
+  /// One flag a cell (1: touched); a writer setting one sets the cell's samples to background.
+  uint8_t* TouchedData() { return touched_.data(); }
   float* DepthData() { return depth_.data(); }
 
   /// Copies a row-major sample frame (a one-sample CellBuffer at k x m times the

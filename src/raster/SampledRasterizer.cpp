@@ -28,11 +28,6 @@ Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int
           dx * (originY - a.y) - dy * (originX - a.x) - (topLeft ? 0 : 1)};
 }
 
-// Boxes of at most this many samples are drawn sample by sample (measured:
-// 32 and cell by cell for bigger boxes is about 5% quicker on sphere_cone
-// than either alone).
-constexpr int kSmallBox = 32;
-
 // Samples s (centers s * 256 + 128) in [low, high], clipped to [0, limit).
 void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
   first = std::max(0, (low - kFixedHalf + kFixedOne - 1) >> kSubCellBits);
@@ -122,6 +117,7 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
+  uint8_t* const touched = frame.TouchedData();
   const size_t width = static_cast<size_t>(frame.WidthCells());
   int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
   for (int row = cellRow0; row <= cellRow1; ++row) {
@@ -144,18 +140,26 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
         }
       }
       if (!any) continue;
-      // Step 2: the covered samples, by the rule (padding lanes written back unchanged).
-      frame.Touch(cell);
+      // Step 2: the covered samples, by the rule (padding lanes written back unchanged;
+      // a cell touched first now starts as background).
+      const Int4 fresh = touched[cell] == 0 ? valid[0] : Int4{};
+      if (kRule == DepthRule::kCoverOnly && touched[cell] == 0) {
+        std::memset(depth + cell * kCount, 0, kCount * sizeof(float));
+      }
+      touched[cell] = 1;
       for (int h = 0; h < kVectors; ++h) {
         uint32_t* const laneFaces = faces + cell * kCount + 4 * h;
         Int4 storedFaces;
         std::memcpy(&storedFaces, laneFaces, sizeof storedFaces);
+        const Int4 cleared = fresh & valid[h];
+        storedFaces &= ~cleared;
         if constexpr (kRule == DepthRule::kCoverOnly) {
           storedFaces = covered[h] ? face : storedFaces;
         } else {
           float* const laneDepth = depth + cell * kCount + 4 * h;
           Float4 stored;
           std::memcpy(&stored, laneDepth, sizeof stored);
+          stored = cleared ? Float4{} : stored;
           const Float4 w = __builtin_convertvector(l12 + o12[h], Float4) * t.k0 +
                            __builtin_convertvector(l20 + o20[h], Float4) * t.k1 +
                            __builtin_convertvector(l01 + o01[h], Float4) * t.k2;
@@ -239,10 +243,12 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   // for every sample of the cells the box touches.
   const int64_t extent = std::max(int64_t{maxX} - minX, int64_t{maxY} - minY);
   const int64_t reach = extent + int64_t{std::max(K, M)} * kFixedOne;
-  // Small boxes and 1x2 cells sample by sample; the rest cell by cell where
-  // 32 bits hold every edge value, else (huge triangles) sample by sample.
+  // 1x2 cells sample by sample; the rest cell by cell where 32 bits hold every
+  // edge value, else (huge triangles) sample by sample. (Measured on
+  // sphere_cone at 2x4: cell by cell is quicker than sample by sample for
+  // small boxes too, once a cell touched first starts as background in registers.)
   const bool fits32 = 2 * extent * reach + 1 < (int64_t{1} << 31) - 1;
-  if ((col1 - col0 + 1) * (row1 - row0 + 1) <= kSmallBox || K * M <= 2 || !fits32) {
+  if (K * M <= 2 || !fits32) {
     DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
   } else {
     DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
