@@ -4,6 +4,8 @@
 // more mixed cells than a scene does, and on the shipped scenes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <random>
 #include <vector>
 
@@ -11,6 +13,7 @@
 #include "geometry/ViewParams.h"
 #include "raster/GlyphStage.h"
 #include "raster/Renderer.h"
+#include "shade/AsciiMatcher.h"
 #include "support/ReferenceGlyphStage.h"
 #include "support/TestSupport.h"
 
@@ -110,6 +113,22 @@ TEST(GlyphStage, EqualsTheReferenceStageOnRandomSampleFrames) {
                           (options.twoColour ? " colour" : " mono") + " seed " +
                           std::to_string(seed));
       if (HasFatalFailure()) return;
+    }
+  }
+}
+
+// MatchShape divides by the brightest sample with a multiplication: exact for every pair.
+TEST(AsciiMatcher, ShapeLevelsAreExactForEveryValueAndBrightest) {
+  for (int brightest = 0; brightest < 256; ++brightest) {
+    for (int value = 0; value <= brightest; ++value) {
+      const std::array<uint8_t, 3> values{static_cast<uint8_t>(brightest),
+                                          static_cast<uint8_t>(value), 255};
+      const std::array<uint8_t, 32> levels = AsciiMatcher::ShapeLevels(values.data(), 0b011, 3);
+      const int divisor = std::max(1, brightest);
+      ASSERT_EQ(levels[0], std::max(1, (brightest * 15 + divisor / 2) / divisor));
+      ASSERT_EQ(levels[1], std::max(1, (value * 15 + divisor / 2) / divisor))
+          << value << " of " << brightest;
+      ASSERT_EQ(levels[2], 0);
     }
   }
 }

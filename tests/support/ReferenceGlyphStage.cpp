@@ -140,6 +140,30 @@ void SetTone(const Tone& tone, const std::array<int16_t, 256>& levelOf, uint32_t
   level = tone.face == 0 ? int16_t{-1} : levelOf[tone.intensity];
 }
 
+// The ascii matcher's sample levels as first written (AsciiMatcher::MatchInk
+// and MatchShape): brightness, or the shape scaled to the brightest sample.
+std::array<uint8_t, 32> InkLevels(const CellSamples& s) {
+  std::array<uint8_t, 32> levels{};
+  for (int n = 0; n < s.count; ++n) {
+    if ((s.covered >> n) & 1U) levels[n] = static_cast<uint8_t>((s.values[n] * 15 + 127) / 255);
+  }
+  return levels;
+}
+
+std::array<uint8_t, 32> ShapeLevels(const CellSamples& s) {
+  int brightest = 1;
+  for (int n = 0; n < s.count; ++n) {
+    if ((s.covered >> n) & 1U) brightest = std::max<int>(brightest, s.values[n]);
+  }
+  std::array<uint8_t, 32> levels{};
+  for (int n = 0; n < s.count; ++n) {
+    if ((s.covered >> n) & 1U) {
+      levels[n] = static_cast<uint8_t>(std::max(1, (s.values[n] * 15 + brightest / 2) / brightest));
+    }
+  }
+  return levels;
+}
+
 }  // namespace
 
 void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const RenderOptions& options,
@@ -204,8 +228,7 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const RenderOpt
       }
       case GlyphMode::kAscii: {
         fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-        glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
-                                  : ascii_.MatchInk(s.values.data(), s.covered);
+        glyph = ascii_.Nearest(options.twoColour ? ShapeLevels(s) : InkLevels(s));
         break;
       }
       case GlyphMode::kBraille:

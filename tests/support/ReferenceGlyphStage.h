@@ -8,8 +8,9 @@
 
 namespace termshade {
 
-/// The glyph stage as first written (plain loops, no short cuts): the
-/// reference the fast GlyphStage is compared with, cell by cell.
+/// The glyph stage as first written (plain loops, no short cuts, the ascii
+/// glyph searched without the matcher's cache): the reference the fast
+/// GlyphStage is compared with, cell by cell.
 class ReferenceGlyphStage {
  public:
   void Compose(const GlyphStage::Samples& samples, const RenderOptions& options, CellBuffer& cells,
