@@ -123,30 +123,40 @@ SamplePattern BrighterHalf(const CellSamples& s) {
 
 // The samples of each part of the pattern grid, one value a part: the
 // parts' mean intensity (background 0) and the face most of its samples show.
-template <int N>
+// kSubAcross x kSubDown samples a part (0: at run time).
+template <int N, int kSubAcross, int kSubDown>
 void ReduceToParts(const CellSamples& s, SampleGrid grid, SampleGrid pattern, CellSamples& parts) {
-  const int subAcross = grid.across / pattern.across, subDown = grid.down / pattern.down;
+  const int subAcross = kSubAcross > 0 ? kSubAcross : grid.across / pattern.across;
+  const int subDown = kSubDown > 0 ? kSubDown : grid.down / pattern.down;
   const int subCount = subAcross * subDown;
   parts.count = pattern.Count();
   parts.covered = 0;
   for (int pj = 0; pj < pattern.down; ++pj) {
     for (int pi = 0; pi < pattern.across; ++pi) {
+      const int first = (pj * subDown) * grid.across + pi * subAcross;
       SamplePattern members = 0;
       int sum = 0;
       for (int y = 0; y < subDown; ++y) {
         for (int x = 0; x < subAcross; ++x) {
-          const int n = (pj * subDown + y) * grid.across + pi * subAcross + x;
+          const int n = first + y * grid.across + x;
           members |= SamplePattern{1} << n;
           sum += s.values[n];
         }
       }
-      const uint32_t firstFace = s.faces[std::countr_zero(members)];
-      const bool oneFace = (members & ~SameFace<N>(s, s.count, firstFace)) == 0;
+      const uint32_t firstFace = s.faces[first];
+      uint32_t face = 0;
+      if constexpr (kSubAcross * kSubDown == 2) {
+        // Two samples: the one face, the covered one, or the lower on a tie.
+        const uint32_t second = s.faces[first + (kSubAcross == 2 ? 1 : grid.across)];
+        face = firstFace == 0 ? second : second == 0 ? firstFace : std::min(firstFace, second);
+      } else {
+        const bool oneFace = (members & ~SameFace<N>(s, s.count, firstFace)) == 0;
+        face = oneFace || (s.covered & members) == 0 ? firstFace : MajorityFace<N>(s, members);
+      }
       const int p = pj * pattern.across + pi;
-      parts.faces[p] =
-          oneFace || (s.covered & members) == 0 ? firstFace : MajorityFace<N>(s, members);
+      parts.faces[p] = face;
       parts.values[p] = static_cast<uint8_t>((sum + subCount / 2) / subCount);
-      if (parts.faces[p] != 0) parts.covered |= SamplePattern{1} << p;
+      if (face != 0) parts.covered |= SamplePattern{1} << p;
     }
   }
 }
@@ -275,7 +285,14 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
     } else if (!reduce) {
       glyph = MixedCell<kCount>(fine, options, all, levelOf_, ascii_, fore, back);
     } else {
-      ReduceToParts<kCount>(fine, grid, in.pattern, parts);
+      // The colour quadrants' (1x2 samples a part) and blocks' (2x2) parts unrolled.
+      if (kCount == 8 && in.pattern == SampleGrid{2, 2}) {
+        ReduceToParts<kCount, 1, 2>(fine, grid, in.pattern, parts);
+      } else if (kCount == 8 && in.pattern == SampleGrid{1, 2}) {
+        ReduceToParts<kCount, 2, 2>(fine, grid, in.pattern, parts);
+      } else {
+        ReduceToParts<kCount, 0, 0>(fine, grid, in.pattern, parts);
+      }
       // The colour blocks' and quadrants' parts; other forced grids at run time.
       if (parts.count == 2) {
         glyph = MixedCell<2>(parts, options, all, levelOf_, ascii_, fore, back);
