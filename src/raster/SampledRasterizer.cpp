@@ -69,14 +69,6 @@ void StoreSample(const Setup& t, Lane w12, Lane w20, Lane w01, uint32_t faceNumb
   }
 }
 
-// The least and greatest offset of an edge's value over a cell's k x m
-// samples from its first (at the corners).
-template <int K, int M>
-void CornerRange(const Edge& e, int64_t& least, int64_t& greatest) {
-  least = std::min<int64_t>(0, (K - 1) * e.stepX) + std::min<int64_t>(0, (M - 1) * e.stepY);
-  greatest = std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
-}
-
 // Four lanes (GCC vector extensions; SSE2 registers on x86-64): a cell's
 // samples in one or two of them, the rest padding.
 typedef int32_t Int4 __attribute__((vector_size(16)));
@@ -110,10 +102,6 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
     o01[n / 4][n % 4] = static_cast<int32_t>(i * e01.stepX + j * e01.stepY);
     valid[n / 4][n % 4] = -1;
   }
-  int64_t least12 = 0, least20 = 0, least01 = 0, greatest12 = 0, greatest20 = 0, greatest01 = 0;
-  CornerRange<K, M>(e12, least12, greatest12);
-  CornerRange<K, M>(e20, least20, greatest20);
-  CornerRange<K, M>(e01, least01, greatest01);
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
@@ -125,20 +113,17 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
     size_t cell = row * width + cellCol0;
     for (int col = cellCol0; col <= cellCol1;
          ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
-      // Step 1: the corners decide cells wholly outside one edge (and wholly inside all).
-      if (b12 + greatest12 < 0 || b20 + greatest20 < 0 || b01 + greatest01 < 0) continue;
-      const bool inside = b12 + least12 >= 0 && b20 + least20 >= 0 && b01 + least01 >= 0;
+      // Step 1: the covered samples, four lanes at a time (branch-free: for
+      // small triangles a test of the cell's corners first costs more than it saves).
       const auto l12 = static_cast<int32_t>(b12), l20 = static_cast<int32_t>(b20),
                  l01 = static_cast<int32_t>(b01);
       Int4 covered[kVectors];
-      bool any = inside;
+      Int4 anyLanes{};
       for (int h = 0; h < kVectors; ++h) {
-        covered[h] = valid[h];
-        if (!inside) {
-          covered[h] &= ((l12 + o12[h]) | (l20 + o20[h]) | (l01 + o01[h])) >= 0;
-          any = any || AnyLane(covered[h]);
-        }
+        covered[h] = valid[h] & (((l12 + o12[h]) | (l20 + o20[h]) | (l01 + o01[h])) >= 0);
+        anyLanes |= covered[h];
       }
+      const bool any = AnyLane(anyLanes);
       if (!any) continue;
       // Step 2: the covered samples, by the rule (padding lanes written back unchanged;
       // a cell touched first now starts as background).
