@@ -82,6 +82,31 @@ bool AnyLane(Int4 mask) {
 #endif
 }
 
+typedef uint32_t UInt4 __attribute__((vector_size(16)));
+
+// Vector h's lanes: the column and row of each sample in the cell, 0 for padding.
+template <int K, int M>
+UInt4 LaneColumns(int h) {
+  UInt4 lanes{};
+  for (int l = 0; l < 4; ++l) lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) % K) : 0U;
+  return lanes;
+}
+template <int K, int M>
+UInt4 LaneRows(int h) {
+  UInt4 lanes{};
+  for (int l = 0; l < 4; ++l) lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) / K) : 0U;
+  return lanes;
+}
+
+// The offsets of vector h's four lanes from the cell's first sample: i stepX +
+// j stepY in 32 bits (wrapping as the 64-bit value's low half does), built in
+// registers (lane by lane stores read back as a vector stall on store forwarding).
+template <int K, int M>
+Int4 LaneOffsets(const Edge& e, int h) {
+  const auto stepX = static_cast<uint32_t>(e.stepX), stepY = static_cast<uint32_t>(e.stepY);
+  return reinterpret_cast<Int4>(LaneColumns<K, M>(h) * stepX + LaneRows<K, M>(h) * stepY);
+}
+
 // DrawCells with 32-bit edge values, four samples of a cell at a time: the
 // same integers, conversions and float operations, lane by lane.
 template <int K, int M, DepthRule kRule>
@@ -94,13 +119,12 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
   const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
   const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
-  Int4 o12[kVectors]{}, o20[kVectors]{}, o01[kVectors]{}, valid[kVectors]{};
-  for (int n = 0; n < kCount; ++n) {
-    const int i = n % K, j = n / K;
-    o12[n / 4][n % 4] = static_cast<int32_t>(i * e12.stepX + j * e12.stepY);
-    o20[n / 4][n % 4] = static_cast<int32_t>(i * e20.stepX + j * e20.stepY);
-    o01[n / 4][n % 4] = static_cast<int32_t>(i * e01.stepX + j * e01.stepY);
-    valid[n / 4][n % 4] = -1;
+  Int4 o12[kVectors], o20[kVectors], o01[kVectors], valid[kVectors];
+  for (int h = 0; h < kVectors; ++h) {
+    o12[h] = LaneOffsets<K, M>(e12, h);
+    o20[h] = LaneOffsets<K, M>(e20, h);
+    o01[h] = LaneOffsets<K, M>(e01, h);
+    for (int l = 0; l < 4; ++l) valid[h][l] = 4 * h + l < kCount ? -1 : 0;
   }
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
