@@ -48,12 +48,24 @@ SamplePattern SameFace(const CellSamples& s, int count, uint32_t face) {
 }
 
 // The face most members show (lower number on a tie): one pass of
-// branch-free comparisons per distinct face.
+// branch-free comparisons per distinct face; with the count known, one
+// branch-free pass per sample (the largest of count << 32 | ~face).
 template <int N>
 uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
+  const SamplePattern inked = members & s.covered;
+  if constexpr (N > 0 && N <= 8) {
+    uint64_t best = 0;
+    for (int i = 0; i < N; ++i) {
+      const uint32_t face = s.faces[i];
+      const auto count = static_cast<uint64_t>(BitCount(SameFace<N>(s, N, face) & members));
+      const uint64_t key = (count << 32) | (~face & 0xFFFFFFFFU);
+      best = std::max(best, ((inked >> i) & 1U) != 0 ? key : 0);
+    }
+    return best == 0 ? 0 : ~static_cast<uint32_t>(best);
+  }
   uint32_t bestFace = 0;
   int bestCount = 0;
-  for (SamplePattern left = members & s.covered; left != 0;) {
+  for (SamplePattern left = inked; left != 0;) {
     const uint32_t face = s.faces[std::countr_zero(left)];
     const SamplePattern same = SameFace<N>(s, s.count, face);
     left &= ~same;
