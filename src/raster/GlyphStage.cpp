@@ -78,9 +78,22 @@ uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
   return bestFace;
 }
 
+// ceil(2^16 / m): (x * kMeanReciprocal[m]) >> 16 is x / m for x < 2^12, m <= 8.
+constexpr std::array<uint32_t, 9> kMeanReciprocal{0,         65536,     32768,
+                                                  21846,     16384,     13108,
+                                                  10923,     9363,      8192};
+
 template <int N>
 Tone ToneOf(const CellSamples& s, SamplePattern members) {
   members &= LowBits(N > 0 ? N : s.count);
+  if constexpr (N > 0 && N <= 8) {  // branch-free: no members gives {0, 0}
+    const int memberCount = BitCount(members);
+    int sum = 0;
+    for (int i = 0; i < N; ++i) sum += ((members >> i) & 1U) != 0 ? s.values[i] : 0;
+    const auto scaled = static_cast<uint32_t>(sum + memberCount / 2);
+    const auto mean = static_cast<uint8_t>((scaled * kMeanReciprocal[memberCount]) >> 16);
+    return {MajorityFace<N>(s, members), mean};
+  }
   if (members == 0) return {};
   const int memberCount = BitCount(members);
   int sum = 0;
@@ -105,25 +118,38 @@ SamplePattern BrighterHalf(const CellSamples& s) {
   const int count = N > 0 ? N : s.count;
   std::array<uint8_t, kMaxSamples> sorted;  // NOLINT(cppcoreguidelines-pro-type-member-init)
   int total = 0;
-  for (int i = 0; i < count; ++i) {  // insertion sort: no allocation, n <= 32
-    const uint8_t value = s.values[i];
-    total += value;
-    int j = i;
-    for (; j > 0 && sorted[j - 1] > value; --j) sorted[j] = sorted[j - 1];
-    sorted[j] = value;
+  if constexpr (N > 0 && N <= 8) {  // odd-even transposition sort: branch-free
+    for (int i = 0; i < N; ++i) {
+      sorted[i] = s.values[i];
+      total += s.values[i];
+    }
+    for (int pass = 0; pass < N; ++pass) {
+      for (int i = pass & 1; i + 1 < N; i += 2) {
+        const uint8_t low = std::min(sorted[i], sorted[i + 1]);
+        sorted[i + 1] = std::max(sorted[i], sorted[i + 1]);
+        sorted[i] = low;
+      }
+    }
+  } else {
+    for (int i = 0; i < count; ++i) {  // insertion sort: no allocation, n <= 32
+      const uint8_t value = s.values[i];
+      total += value;
+      int j = i;
+      for (; j > 0 && sorted[j - 1] > value; --j) sorted[j] = sorted[j - 1];
+      sorted[j] = value;
+    }
   }
-  // Maximizing sumLow^2/nLow + sumHigh^2/nHigh minimizes the squared error.
+  // Maximizing sumLow^2/nLow + sumHigh^2/nHigh minimizes the squared error
+  // (every cut scored, one between equal values never taken: no branches).
   double bestScore = -1.0;
   int bestCut = 0, lowSum = 0;
   for (int cut = 1; cut < count; ++cut) {
     lowSum += sorted[cut - 1];
-    if (sorted[cut - 1] == sorted[cut]) continue;
     const double highSum = total - lowSum;
     const double score = double(lowSum) * lowSum / cut + highSum * highSum / (count - cut);
-    if (score > bestScore) {
-      bestScore = score;
-      bestCut = cut;
-    }
+    const bool better = sorted[cut - 1] != sorted[cut] && score > bestScore;
+    bestScore = better ? score : bestScore;
+    bestCut = better ? cut : bestCut;
   }
   if (bestCut == 0) return 0;
   SamplePattern ink = 0;
