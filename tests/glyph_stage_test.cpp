@@ -97,7 +97,8 @@ TEST(GlyphStage, EqualsTheReferenceStageOnRandomSampleFrames) {
     for (uint32_t seed = 1; seed <= 12; ++seed) {
       // Intensities from few values (equal neighbours: ties in the split) or from all.
       for (uint8_t& v : intensities) {
-        v = static_cast<uint8_t>(seed % 3 == 0 ? 64 * (random() % 5) - (random() % 5 == 4) : random() % 256);
+        v = static_cast<uint8_t>(seed % 3 == 0 ? 64 * (random() % 5) - (random() % 5 == 4)
+                                               : random() % 256);
       }
       const SampleFrame frame = RandomFrame(FrameSampleGrid(options), seed, kFaces);
       const GlyphStage::Samples samples{frame, intensities, PatternSampleGrid(options),

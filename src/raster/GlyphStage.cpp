@@ -79,9 +79,8 @@ uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
 }
 
 // ceil(2^16 / m): (x * kMeanReciprocal[m]) >> 16 is x / m for x < 2^12, m <= 8.
-constexpr std::array<uint32_t, 9> kMeanReciprocal{0,         65536,     32768,
-                                                  21846,     16384,     13108,
-                                                  10923,     9363,      8192};
+constexpr std::array<uint32_t, 9> kMeanReciprocal{0,     65536, 32768, 21846, 16384,
+                                                  13108, 10923, 9363,  8192};
 
 template <int N>
 Tone ToneOf(const CellSamples& s, SamplePattern members) {

@@ -38,9 +38,10 @@ class GlyphStage {
                    DepthBuffer& depth);
 
   AsciiMatcher ascii_;
-  int levelCount_ = 0;                      ///< the ramp's level count levelOf_ is for
-  std::array<int16_t, 256> levelOf_{};      ///< ramp level by intensity
-  std::array<char32_t, 256> uniformAscii_{};  ///< this frame's ascii glyph of one-face cells; 0 unknown
+  int levelCount_ = 0;                  ///< the ramp's level count levelOf_ is for
+  std::array<int16_t, 256> levelOf_{};  ///< ramp level by intensity
+  /// This frame's ascii glyph of a one-face cell by intensity; 0 unknown.
+  std::array<char32_t, 256> uniformAscii_{};
 };
 
 }  // namespace termshade

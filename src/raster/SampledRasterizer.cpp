@@ -88,13 +88,17 @@ typedef uint32_t UInt4 __attribute__((vector_size(16)));
 template <int K, int M>
 UInt4 LaneColumns(int h) {
   UInt4 lanes{};
-  for (int l = 0; l < 4; ++l) lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) % K) : 0U;
+  for (int l = 0; l < 4; ++l) {
+    lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) % K) : 0U;
+  }
   return lanes;
 }
 template <int K, int M>
 UInt4 LaneRows(int h) {
   UInt4 lanes{};
-  for (int l = 0; l < 4; ++l) lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) / K) : 0U;
+  for (int l = 0; l < 4; ++l) {
+    lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) / K) : 0U;
+  }
   return lanes;
 }
 
