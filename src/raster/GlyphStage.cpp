@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "shade/BlockGlyphs.h"
 
@@ -25,118 +26,215 @@ struct Tone {
   uint8_t intensity = 0;
 };
 
-// The face most members show (lower number on a tie): counts per distinct face.
+SamplePattern LowBits(int count) {
+  return count >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << count) - 1;
+}
+
+// Set bits of a pattern, inline (std::popcount calls libgcc on baseline x86-64).
+int BitCount(SamplePattern bits) {
+  bits = bits - ((bits >> 1) & 0x55555555U);
+  bits = (bits & 0x33333333U) + ((bits >> 2) & 0x33333333U);
+  return static_cast<int>((((bits + (bits >> 4)) & 0x0F0F0F0FU) * 0x01010101U) >> 24);
+}
+
+// The samples (of the first `count`) showing `face`, as bits.
+template <int N>  // N > 0: the count known to the compiler
+SamplePattern SameFace(const CellSamples& s, int count, uint32_t face) {
+  SamplePattern same = 0;
+  for (int j = 0; j < (N > 0 ? N : count); ++j) {
+    same |= static_cast<SamplePattern>(s.faces[j] == face) << j;
+  }
+  return same;
+}
+
+// The face most members show (lower number on a tie): one pass of
+// branch-free comparisons per distinct face; with the count known, one
+// branch-free pass per sample (the largest of count << 32 | ~face).
+template <int N>
 uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
-  std::array<uint32_t, kMaxSamples> distinct;  // NOLINT(cppcoreguidelines-pro-type-member-init)
-  std::array<int, kMaxSamples> counts;         // NOLINT(cppcoreguidelines-pro-type-member-init)
-  int distinctCount = 0;
-  for (int i = 0; i < s.count; ++i) {
-    const uint32_t face = s.faces[i];
-    if (!((members >> i) & 1U) || face == 0) continue;
-    int d = 0;
-    while (d < distinctCount && distinct[d] != face) ++d;
-    if (d == distinctCount) {
-      distinct[d] = face;
-      counts[d] = 0;
-      ++distinctCount;
+  const SamplePattern inked = members & s.covered;
+  if constexpr (N > 0 && N <= 8) {
+    uint64_t best = 0;
+    for (int i = 0; i < N; ++i) {
+      const uint32_t face = s.faces[i];
+      const auto count = static_cast<uint64_t>(BitCount(SameFace<N>(s, N, face) & members));
+      const uint64_t key = (count << 32) | (~face & 0xFFFFFFFFU);
+      best = std::max(best, ((inked >> i) & 1U) != 0 ? key : 0);
     }
-    ++counts[d];
+    return best == 0 ? 0 : ~static_cast<uint32_t>(best);
   }
   uint32_t bestFace = 0;
   int bestCount = 0;
-  for (int d = 0; d < distinctCount; ++d) {
-    if (counts[d] > bestCount || (counts[d] == bestCount && distinct[d] < bestFace)) {
-      bestFace = distinct[d];
-      bestCount = counts[d];
+  for (SamplePattern left = inked; left != 0;) {
+    const uint32_t face = s.faces[std::countr_zero(left)];
+    const SamplePattern same = SameFace<N>(s, s.count, face);
+    left &= ~same;
+    const int count = BitCount(same & members);
+    if (count > bestCount || (count == bestCount && face < bestFace)) {
+      bestFace = face;
+      bestCount = count;
     }
   }
   return bestFace;
 }
 
+// ceil(2^16 / m): (x * kMeanReciprocal[m]) >> 16 is x / m for x < 2^12, m <= 8.
+constexpr std::array<uint32_t, 9> kMeanReciprocal{0,     65536, 32768, 21846, 16384,
+                                                  13108, 10923, 9363,  8192};
+
+template <int N>
 Tone ToneOf(const CellSamples& s, SamplePattern members) {
-  // Usually the members show one face (and perhaps background): no counting.
-  uint32_t onlyFace = 0;
-  bool oneFace = true;
-  int memberCount = 0, sum = 0;
-  for (int i = 0; i < s.count; ++i) {
-    if (!((members >> i) & 1U)) continue;
-    ++memberCount;
-    sum += s.values[i];
-    const uint32_t face = s.faces[i];
-    if (face == 0) continue;
-    oneFace = oneFace && (onlyFace == 0 || face == onlyFace);
-    onlyFace = face;
+  members &= LowBits(N > 0 ? N : s.count);
+  if constexpr (N > 0 && N <= 8) {  // branch-free: no members gives {0, 0}
+    const int memberCount = BitCount(members);
+    int sum = 0;
+    for (int i = 0; i < N; ++i) sum += ((members >> i) & 1U) != 0 ? s.values[i] : 0;
+    const auto scaled = static_cast<uint32_t>(sum + memberCount / 2);
+    const auto mean = static_cast<uint8_t>((scaled * kMeanReciprocal[memberCount]) >> 16);
+    return {MajorityFace<N>(s, members), mean};
   }
-  if (memberCount == 0) return {};
+  if (members == 0) return {};
+  const int memberCount = BitCount(members);
+  int sum = 0;
+  for (int i = 0; i < (N > 0 ? N : s.count); ++i) {
+    sum += ((members >> i) & 1U) != 0 ? s.values[i] : 0;
+  }
   const auto mean = static_cast<uint8_t>((sum + memberCount / 2) / memberCount);
-  if (oneFace) return {onlyFace, mean};
-  return {MajorityFace(s, members), mean};
+  // Usually the inked members show one face: no counting.
+  const SamplePattern inked = members & s.covered;
+  if (inked == 0) return {0, mean};
+  const uint32_t first = s.faces[std::countr_zero(inked)];
+  if ((inked & ~SameFace<N>(s, s.count, first)) == 0) return {first, mean};
+  return {MajorityFace<N>(s, members), mean};
 }
 
 // The best two-tone split of grey values (least squared error): a threshold
 // on the sorted values; the brighter side is the ink. Ties go to the first
-// threshold in sorted order, equal values keep sample order.
+// threshold in sorted order. No threshold falls between equal values, so the
+// ink is the samples at or above the threshold's value.
+template <int N>
 SamplePattern BrighterHalf(const CellSamples& s) {
-  std::array<int, kMaxSamples> order{};
-  for (int i = 0; i < s.count; ++i) {  // insertion sort: stable, no allocation, n <= 32
-    int j = i;
-    for (; j > 0 && s.values[order[j - 1]] > s.values[i]; --j) order[j] = order[j - 1];
-    order[j] = i;
-  }
+  const int count = N > 0 ? N : s.count;
+  std::array<uint8_t, kMaxSamples> sorted;  // NOLINT(cppcoreguidelines-pro-type-member-init)
   int total = 0;
-  for (int i = 0; i < s.count; ++i) total += s.values[i];
-  // Maximizing sumLow^2/nLow + sumHigh^2/nHigh minimizes the squared error.
-  double bestScore = -1.0;
-  int bestCut = 0, lowSum = 0;
-  for (int cut = 1; cut < s.count; ++cut) {
-    lowSum += s.values[order[cut - 1]];
-    if (s.values[order[cut - 1]] == s.values[order[cut]]) continue;
-    const double highSum = total - lowSum;
-    const double score = double(lowSum) * lowSum / cut + highSum * highSum / (s.count - cut);
-    if (score > bestScore) {
-      bestScore = score;
-      bestCut = cut;
+  if constexpr (N > 0 && N <= 8) {  // odd-even transposition sort: branch-free
+    for (int i = 0; i < N; ++i) {
+      sorted[i] = s.values[i];
+      total += s.values[i];
+    }
+    for (int pass = 0; pass < N; ++pass) {
+      for (int i = pass & 1; i + 1 < N; i += 2) {
+        const uint8_t low = std::min(sorted[i], sorted[i + 1]);
+        sorted[i + 1] = std::max(sorted[i], sorted[i + 1]);
+        sorted[i] = low;
+      }
+    }
+  } else {
+    for (int i = 0; i < count; ++i) {  // insertion sort: no allocation, n <= 32
+      const uint8_t value = s.values[i];
+      total += value;
+      int j = i;
+      for (; j > 0 && sorted[j - 1] > value; --j) sorted[j] = sorted[j - 1];
+      sorted[j] = value;
     }
   }
+  // Maximizing sumLow^2/nLow + sumHigh^2/nHigh minimizes the squared error
+  // (every cut scored, one between equal values never taken: no branches).
+  double bestScore = -1.0;
+  int bestCut = 0, lowSum = 0;
+  for (int cut = 1; cut < count; ++cut) {
+    lowSum += sorted[cut - 1];
+    const double highSum = total - lowSum;
+    const double score = double(lowSum) * lowSum / cut + highSum * highSum / (count - cut);
+    const bool better = sorted[cut - 1] != sorted[cut] && score > bestScore;
+    bestScore = better ? score : bestScore;
+    bestCut = better ? cut : bestCut;
+  }
+  if (bestCut == 0) return 0;
   SamplePattern ink = 0;
-  for (int i = bestCut; i < s.count; ++i) ink |= SamplePattern{1} << order[i];
+  for (int i = 0; i < count; ++i) {
+    ink |= static_cast<SamplePattern>(s.values[i] >= sorted[bestCut]) << i;
+  }
   return ink;
 }
 
 // The samples of each part of the pattern grid, one value a part: the
 // parts' mean intensity (background 0) and the face most of its samples show.
+// kSubAcross x kSubDown samples a part (0: at run time).
+template <int N, int kSubAcross, int kSubDown>
 void ReduceToParts(const CellSamples& s, SampleGrid grid, SampleGrid pattern, CellSamples& parts) {
-  const int subAcross = grid.across / pattern.across, subDown = grid.down / pattern.down;
+  const int subAcross = kSubAcross > 0 ? kSubAcross : grid.across / pattern.across;
+  const int subDown = kSubDown > 0 ? kSubDown : grid.down / pattern.down;
   const int subCount = subAcross * subDown;
   parts.count = pattern.Count();
   parts.covered = 0;
   for (int pj = 0; pj < pattern.down; ++pj) {
     for (int pi = 0; pi < pattern.across; ++pi) {
+      const int first = (pj * subDown) * grid.across + pi * subAcross;
       SamplePattern members = 0;
       int sum = 0;
-      const uint32_t firstFace = s.faces[(pj * subDown) * grid.across + pi * subAcross];
-      bool oneFace = true;
       for (int y = 0; y < subDown; ++y) {
         for (int x = 0; x < subAcross; ++x) {
-          const int n = (pj * subDown + y) * grid.across + pi * subAcross + x;
+          const int n = first + y * grid.across + x;
           members |= SamplePattern{1} << n;
           sum += s.values[n];
-          oneFace = oneFace && s.faces[n] == firstFace;
         }
       }
+      const uint32_t firstFace = s.faces[first];
+      uint32_t face = 0;
+      if constexpr (kSubAcross * kSubDown == 2) {
+        // Two samples: the one face, the covered one, or the lower on a tie.
+        const uint32_t second = s.faces[first + (kSubAcross == 2 ? 1 : grid.across)];
+        face = firstFace == 0 ? second : second == 0 ? firstFace : std::min(firstFace, second);
+      } else {
+        const bool oneFace = (members & ~SameFace<N>(s, s.count, firstFace)) == 0;
+        face = oneFace || (s.covered & members) == 0 ? firstFace : MajorityFace<N>(s, members);
+      }
       const int p = pj * pattern.across + pi;
-      parts.faces[p] = oneFace || (s.covered & members) == 0 ? firstFace : MajorityFace(s, members);
+      parts.faces[p] = face;
       parts.values[p] = static_cast<uint8_t>((sum + subCount / 2) / subCount);
-      if (parts.faces[p] != 0) parts.covered |= SamplePattern{1} << p;
+      if (face != 0) parts.covered |= SamplePattern{1} << p;
     }
   }
 }
 
-void SetTone(const Tone& tone, const std::array<int16_t, 256>& levelOf, uint32_t& face,
-             int16_t& level, uint8_t& intensity) {
-  face = tone.face;
-  intensity = tone.intensity;
-  level = tone.face == 0 ? int16_t{-1} : levelOf[tone.intensity];
+// Every cell background: what the cells no sample of the frame reaches keep.
+void FillBackground(CellBuffer& cells) {
+  std::fill(cells.Glyphs().begin(), cells.Glyphs().end(), U' ');
+  std::fill(cells.FaceNumbers().begin(), cells.FaceNumbers().end(), 0U);
+  std::fill(cells.Levels().begin(), cells.Levels().end(), int16_t{-1});
+  std::fill(cells.Intensities().begin(), cells.Intensities().end(), uint8_t{0});
+  std::fill(cells.BackFaceNumbers().begin(), cells.BackFaceNumbers().end(), 0U);
+  std::fill(cells.BackLevels().begin(), cells.BackLevels().end(), int16_t{-1});
+  std::fill(cells.BackIntensities().begin(), cells.BackIntensities().end(), uint8_t{0});
+}
+
+// The glyph and tones of a cell whose samples (or parts) show more than one face.
+template <int N>
+char32_t MixedCell(const CellSamples& s, const RenderOptions& options, SamplePattern all,
+                   const std::array<int16_t, 256>& levelOf, AsciiMatcher& ascii, Tone& fore,
+                   Tone& back) {
+  const GlyphMode mode = options.glyphs;
+  switch (mode) {
+    case GlyphMode::kRamp:
+      fore = ToneOf<N>(s, all);
+      return options.ramp.Glyph(levelOf[fore.intensity]);
+    case GlyphMode::kAscii:
+      fore = ToneOf<N>(s, s.covered);
+      return options.twoColour ? ascii.MatchShape(s.values.data(), s.covered)
+                               : ascii.MatchInk(s.values.data(), s.covered);
+    case GlyphMode::kBraille:
+      fore = ToneOf<N>(s, s.covered);
+      return PatternGlyph(mode, s.covered);
+    default: {  // blocks, quadrants, sextants
+      SamplePattern ink = s.covered;
+      if (options.twoColour) ink = BrighterHalf<N>(s);
+      if (ink == 0) ink = all;
+      fore = ToneOf<N>(s, ink);
+      if (options.twoColour) back = ToneOf<N>(s, all & ~ink);
+      return PatternGlyph(mode, ink);
+    }
+  }
 }
 
 }  // namespace
@@ -145,6 +243,15 @@ void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBu
                          DepthBuffer& depth) {
   if (in.writeDepth) depth.Clear();
   if (options.glyphs == GlyphMode::kAscii) ascii_.Prepare(in.frame.Grid());
+  // The ramp level of each intensity: LevelFor depends on the level count alone.
+  if (levelCount_ != options.ramp.LevelCount()) {
+    levelCount_ = options.ramp.LevelCount();
+    for (int i = 0; i < 256; ++i) {
+      levelOf_[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
+    }
+  }
+  uniformAscii_.fill(0);  // ascii glyphs of one-face cells, by intensity, filled as met
+  FillBackground(cells);
   // The mode's own grids with their sizes known to the compiler; any other (forced) at run time.
   const SampleGrid g = in.frame.Grid();
   if (g == SampleGrid{1, 2}) return ComposeGrid<1, 2>(in, options, cells, depth);
@@ -157,91 +264,88 @@ void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBu
 template <int kAcross, int kDown>
 void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
                              DepthBuffer& depth) {
+  constexpr int kCount = kAcross * kDown;  // 0: at run time
   const SampleGrid grid = in.frame.Grid();
-  const int k = kAcross > 0 ? kAcross : grid.across;
-  const int m = kDown > 0 ? kDown : grid.down;
+  const int count = kCount > 0 ? kCount : grid.Count();
   const GlyphMode mode = options.glyphs;
   const int partCount = in.pattern.Count();
   const bool reduce = !(in.pattern == grid);
-  const SamplePattern all =
-      partCount >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << partCount) - 1;
-  // The ramp level of each intensity, once a frame.
-  std::array<int16_t, 256> levelOf{};
-  for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
+  const SamplePattern all = LowBits(partCount);
   const uint8_t* const faceIntensity = in.faceIntensities.data();
   CellSamples fine, parts;
-  fine.count = k * m;
-  const size_t cellCount = static_cast<size_t>(cells.WidthCells()) * cells.HeightCells();
-  for (size_t index = 0; index < cellCount; ++index) {
-    // Step 1: the cell's samples, whether they all show one face, and the nearest depth.
+  fine.count = count;
+  const size_t cellCount = in.frame.CellCount();
+  for (size_t index = in.frame.NextTouched(0); index < cellCount;
+       index = in.frame.NextTouched(index + 1)) {
+    // Step 1: the cell's samples and whether they all show one face.
+    const uint32_t* const sampleFaces = in.frame.Faces(index).data();
+    const uint32_t firstFace = sampleFaces[0];
     bool oneFace = true;
-    uint32_t firstFace = 0;
-    if (in.frame.Touched(index)) {
-      const uint32_t* const sampleFaces = in.frame.Faces(index).data();
-      firstFace = sampleFaces[0];
-      for (int n = 0; n < k * m; ++n) {
-        const uint32_t face = sampleFaces[n];
-        fine.faces[n] = face;
-        oneFace = oneFace && face == firstFace;
-      }
-    }
-    if (oneFace && firstFace == 0) {  // background
-      SetTone({}, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
-              cells.Intensities()[index]);
-      SetTone({}, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
-              cells.BackIntensities()[index]);
-      cells.Glyphs()[index] = U' ';
-      continue;
-    }
-    fine.covered = 0;
-    float nearest = 0.0F;
-    for (int n = 0; n < k * m; ++n) {
-      const uint32_t face = fine.faces[n];
+    SamplePattern covered = 0;
+    for (int n = 0; n < count; ++n) {
+      const uint32_t face = sampleFaces[n];
+      fine.faces[n] = face;
       fine.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
-      fine.covered |= face != 0 ? SamplePattern{1} << n : 0;
-      if (in.writeDepth) nearest = std::max(nearest, in.frame.Depths(index)[n]);
+      covered |= static_cast<SamplePattern>(face != 0) << n;
+      oneFace = oneFace && face == firstFace;
     }
-    if (reduce) ReduceToParts(fine, grid, in.pattern, parts);
-    const CellSamples& s = reduce ? parts : fine;
-    // Step 2: the glyph and its colours.
-    SamplePattern ink = s.covered;
+    if (oneFace && firstFace == 0) continue;  // background, as filled
+    fine.covered = covered;
+    if (in.writeDepth) {
+      const float* const sampleDepths = in.frame.Depths(index).data();
+      float nearest = 0.0F;
+      for (int n = 0; n < count; ++n) nearest = std::max(nearest, sampleDepths[n]);
+      depth.At(index) = nearest;
+    }
+    // Step 2: the glyph and its colours; a cell of one face has one tone (a full block).
     Tone fore, back;
     char32_t glyph = U' ';
-    switch (mode) {
-      case GlyphMode::kRamp: {
-        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
-        glyph = options.ramp.Glyph(levelOf[fore.intensity]);
-        break;
-      }
-      case GlyphMode::kAscii: {
-        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-        glyph = options.twoColour ? ascii_.MatchShape(s.values.data(), s.covered)
-                                  : ascii_.MatchInk(s.values.data(), s.covered);
-        break;
-      }
-      case GlyphMode::kBraille:
-        fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-        glyph = PatternGlyph(mode, s.covered);
-        break;
-      default:          // blocks, quadrants, sextants
-        if (oneFace) {  // one tone: a full block
-          ink = all;
-          fore = {firstFace, s.values[0]};
-        } else {
-          if (options.twoColour) ink = BrighterHalf(s);
-          if (ink == 0) ink = all;
-          fore = ToneOf(s, ink);
-          if (options.twoColour) back = ToneOf(s, all & ~ink);
+    if (oneFace) {
+      fore = {firstFace, fine.values[0]};
+      switch (mode) {
+        case GlyphMode::kRamp:
+          glyph = options.ramp.Glyph(levelOf_[fore.intensity]);
+          break;
+        case GlyphMode::kAscii: {
+          char32_t& known = uniformAscii_[fore.intensity];
+          if (known == 0) {
+            known = options.twoColour ? ascii_.MatchShape(fine.values.data(), all)
+                                      : ascii_.MatchInk(fine.values.data(), all);
+          }
+          glyph = known;
+          break;
         }
-        glyph = PatternGlyph(mode, ink);
-        break;
+        default:
+          glyph = PatternGlyph(mode, all);
+          break;
+      }
+    } else if (!reduce) {
+      glyph = MixedCell<kCount>(fine, options, all, levelOf_, ascii_, fore, back);
+    } else {
+      // The colour quadrants' (1x2 samples a part) and blocks' (2x2) parts unrolled.
+      if (kCount == 8 && in.pattern == SampleGrid{2, 2}) {
+        ReduceToParts<kCount, 1, 2>(fine, grid, in.pattern, parts);
+      } else if (kCount == 8 && in.pattern == SampleGrid{1, 2}) {
+        ReduceToParts<kCount, 2, 2>(fine, grid, in.pattern, parts);
+      } else {
+        ReduceToParts<kCount, 0, 0>(fine, grid, in.pattern, parts);
+      }
+      // The colour blocks' and quadrants' parts; other forced grids at run time.
+      if (parts.count == 2) {
+        glyph = MixedCell<2>(parts, options, all, levelOf_, ascii_, fore, back);
+      } else if (parts.count == 4) {
+        glyph = MixedCell<4>(parts, options, all, levelOf_, ascii_, fore, back);
+      } else {
+        glyph = MixedCell<0>(parts, options, all, levelOf_, ascii_, fore, back);
+      }
     }
     cells.Glyphs()[index] = glyph;
-    SetTone(fore, levelOf, cells.FaceNumbers()[index], cells.Levels()[index],
-            cells.Intensities()[index]);
-    SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
-            cells.BackIntensities()[index]);
-    if (in.writeDepth) depth.At(index) = nearest;
+    cells.FaceNumbers()[index] = fore.face;
+    cells.Intensities()[index] = fore.intensity;
+    cells.Levels()[index] = fore.face == 0 ? int16_t{-1} : levelOf_[fore.intensity];
+    cells.BackFaceNumbers()[index] = back.face;
+    cells.BackIntensities()[index] = back.intensity;
+    cells.BackLevels()[index] = back.face == 0 ? int16_t{-1} : levelOf_[back.intensity];
   }
 }
 

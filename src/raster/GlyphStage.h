@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -14,7 +15,9 @@ namespace termshade {
 /// The stage after shading when a cell has several samples (SPEC 11): reads a
 /// frame of samples (grid.across x grid.down per cell, each with its face and
 /// intensity) and writes each cell's glyph and its fg/bg (face, intensity) pairs.
-/// Keeps the ascii matcher's cache between frames.
+/// Keeps the ascii matcher's cache and the ramp's level table between frames.
+/// Cells no sample reaches are filled as background at once; a cell whose
+/// samples show one face takes its tone without a split or a match.
 class GlyphStage {
  public:
   /// A frame of samples (faces and depth per sample, the grid), the
@@ -35,6 +38,10 @@ class GlyphStage {
                    DepthBuffer& depth);
 
   AsciiMatcher ascii_;
+  int levelCount_ = 0;                  ///< the ramp's level count levelOf_ is for
+  std::array<int16_t, 256> levelOf_{};  ///< ramp level by intensity
+  /// This frame's ascii glyph of a one-face cell by intensity; 0 unknown.
+  std::array<char32_t, 256> uniformAscii_{};
 };
 
 }  // namespace termshade

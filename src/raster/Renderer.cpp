@@ -174,11 +174,17 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   RenderStats stats;
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
   BeginSeenFaces(scene);
-  uint32_t previous = 0;
-  for (size_t cell = 0; cell < sampleFrame_.CellCount(); ++cell) {
-    if (!sampleFrame_.Touched(cell)) continue;
+  // A cell's samples alternate between faces: no run test, one branch that is
+  // seldom taken (a face not seen yet).
+  int16_t* const levels = faceLevels_.data();
+  const size_t cellCount = sampleFrame_.CellCount();
+  for (size_t cell = sampleFrame_.NextTouched(0); cell < cellCount;
+       cell = sampleFrame_.NextTouched(cell + 1)) {
     for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
-      MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
+      if (faceNumber != 0 && levels[faceNumber - 1] == -1) {
+        levels[faceNumber - 1] = 0;
+        seenFaces_.push_back(faceNumber - 1);
+      }
     }
   }
   ShadeSeenFaces(scene, single);

@@ -1,6 +1,8 @@
 #include "raster/SampleFrame.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 
 namespace termshade {
 
@@ -14,6 +16,18 @@ void SampleFrame::Begin(int widthCells, int heightCells, SampleGrid grid) {
   faces_.resize(cells * perCell_ + kPaddingSamples);
   depth_.resize(cells * perCell_ + kPaddingSamples);
   touched_.assign(cells, 0);
+}
+
+size_t SampleFrame::NextTouched(size_t cell) const {
+  const size_t count = touched_.size();
+  while (cell + 8 <= count) {
+    uint64_t flags = 0;
+    std::memcpy(&flags, touched_.data() + cell, sizeof flags);
+    if (flags != 0) return cell + static_cast<size_t>(std::countr_zero(flags) / 8);
+    cell += 8;
+  }
+  while (cell < count && touched_[cell] == 0) ++cell;
+  return cell;
 }
 
 void SampleFrame::CopyFrom(const CellBuffer& samples, const DepthBuffer* depth) {

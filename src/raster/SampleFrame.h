@@ -27,6 +27,8 @@ class SampleFrame {
   SampleGrid Grid() const { return grid_; }
   size_t CellCount() const { return touched_.size(); }
   bool Touched(size_t cell) const { return touched_[cell] != 0; }
+  /// The first touched cell at or after `cell` (eight flags a load), or CellCount().
+  size_t NextTouched(size_t cell) const;
 
   /// The cell's samples; valid only for a touched cell.
   std::span<const uint32_t> Faces(size_t cell) const {
@@ -46,6 +48,8 @@ class SampleFrame {
     }
   }
   uint32_t* FaceData() { return faces_.data(); }
+  /// One flag a cell (1: touched); a writer setting one sets the cell's samples to background.
+  uint8_t* TouchedData() { return touched_.data(); }
   float* DepthData() { return depth_.data(); }
 
   /// Copies a row-major sample frame (a one-sample CellBuffer at k x m times the

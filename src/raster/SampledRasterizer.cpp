@@ -28,11 +28,6 @@ Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int
           dx * (originY - a.y) - dy * (originX - a.x) - (topLeft ? 0 : 1)};
 }
 
-// Boxes of at most this many samples are drawn sample by sample (measured:
-// 32 and cell by cell for bigger boxes is about 5% quicker on sphere_cone
-// than either alone).
-constexpr int kSmallBox = 32;
-
 // Samples s (centers s * 256 + 128) in [low, high], clipped to [0, limit).
 void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
   first = std::max(0, (low - kFixedHalf + kFixedOne - 1) >> kSubCellBits);
@@ -74,14 +69,6 @@ void StoreSample(const Setup& t, Lane w12, Lane w20, Lane w01, uint32_t faceNumb
   }
 }
 
-// The least and greatest offset of an edge's value over a cell's k x m
-// samples from its first (at the corners).
-template <int K, int M>
-void CornerRange(const Edge& e, int64_t& least, int64_t& greatest) {
-  least = std::min<int64_t>(0, (K - 1) * e.stepX) + std::min<int64_t>(0, (M - 1) * e.stepY);
-  greatest = std::max<int64_t>(0, (K - 1) * e.stepX) + std::max<int64_t>(0, (M - 1) * e.stepY);
-}
-
 // Four lanes (GCC vector extensions; SSE2 registers on x86-64): a cell's
 // samples in one or two of them, the rest padding.
 typedef int32_t Int4 __attribute__((vector_size(16)));
@@ -93,6 +80,35 @@ bool AnyLane(Int4 mask) {
 #else
   return (mask[0] | mask[1] | mask[2] | mask[3]) != 0;
 #endif
+}
+
+typedef uint32_t UInt4 __attribute__((vector_size(16)));
+
+// Vector h's lanes: the column and row of each sample in the cell, 0 for padding.
+template <int K, int M>
+UInt4 LaneColumns(int h) {
+  UInt4 lanes{};
+  for (int l = 0; l < 4; ++l) {
+    lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) % K) : 0U;
+  }
+  return lanes;
+}
+template <int K, int M>
+UInt4 LaneRows(int h) {
+  UInt4 lanes{};
+  for (int l = 0; l < 4; ++l) {
+    lanes[l] = 4 * h + l < K * M ? static_cast<uint32_t>((4 * h + l) / K) : 0U;
+  }
+  return lanes;
+}
+
+// The offsets of vector h's four lanes from the cell's first sample: i stepX +
+// j stepY in 32 bits (wrapping as the 64-bit value's low half does), built in
+// registers (lane by lane stores read back as a vector stall on store forwarding).
+template <int K, int M>
+Int4 LaneOffsets(const Edge& e, int h) {
+  const auto stepX = static_cast<uint32_t>(e.stepX), stepY = static_cast<uint32_t>(e.stepY);
+  return reinterpret_cast<Int4>(LaneColumns<K, M>(h) * stepX + LaneRows<K, M>(h) * stepY);
 }
 
 // DrawCells with 32-bit edge values, four samples of a cell at a time: the
@@ -107,21 +123,17 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
   const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
   const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
-  Int4 o12[kVectors]{}, o20[kVectors]{}, o01[kVectors]{}, valid[kVectors]{};
-  for (int n = 0; n < kCount; ++n) {
-    const int i = n % K, j = n / K;
-    o12[n / 4][n % 4] = static_cast<int32_t>(i * e12.stepX + j * e12.stepY);
-    o20[n / 4][n % 4] = static_cast<int32_t>(i * e20.stepX + j * e20.stepY);
-    o01[n / 4][n % 4] = static_cast<int32_t>(i * e01.stepX + j * e01.stepY);
-    valid[n / 4][n % 4] = -1;
+  Int4 o12[kVectors], o20[kVectors], o01[kVectors], valid[kVectors];
+  for (int h = 0; h < kVectors; ++h) {
+    o12[h] = LaneOffsets<K, M>(e12, h);
+    o20[h] = LaneOffsets<K, M>(e20, h);
+    o01[h] = LaneOffsets<K, M>(e01, h);
+    for (int l = 0; l < 4; ++l) valid[h][l] = 4 * h + l < kCount ? -1 : 0;
   }
-  int64_t least12 = 0, least20 = 0, least01 = 0, greatest12 = 0, greatest20 = 0, greatest01 = 0;
-  CornerRange<K, M>(e12, least12, greatest12);
-  CornerRange<K, M>(e20, least20, greatest20);
-  CornerRange<K, M>(e01, least01, greatest01);
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
+  uint8_t* const touched = frame.TouchedData();
   const size_t width = static_cast<size_t>(frame.WidthCells());
   int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
   for (int row = cellRow0; row <= cellRow1; ++row) {
@@ -129,33 +141,38 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
     size_t cell = row * width + cellCol0;
     for (int col = cellCol0; col <= cellCol1;
          ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
-      // Step 1: the corners decide cells wholly outside one edge (and wholly inside all).
-      if (b12 + greatest12 < 0 || b20 + greatest20 < 0 || b01 + greatest01 < 0) continue;
-      const bool inside = b12 + least12 >= 0 && b20 + least20 >= 0 && b01 + least01 >= 0;
+      // Step 1: the covered samples, four lanes at a time (branch-free: for
+      // small triangles a test of the cell's corners first costs more than it saves).
       const auto l12 = static_cast<int32_t>(b12), l20 = static_cast<int32_t>(b20),
                  l01 = static_cast<int32_t>(b01);
       Int4 covered[kVectors];
-      bool any = inside;
+      Int4 anyLanes{};
       for (int h = 0; h < kVectors; ++h) {
-        covered[h] = valid[h];
-        if (!inside) {
-          covered[h] &= ((l12 + o12[h]) | (l20 + o20[h]) | (l01 + o01[h])) >= 0;
-          any = any || AnyLane(covered[h]);
-        }
+        covered[h] = valid[h] & (((l12 + o12[h]) | (l20 + o20[h]) | (l01 + o01[h])) >= 0);
+        anyLanes |= covered[h];
       }
+      const bool any = AnyLane(anyLanes);
       if (!any) continue;
-      // Step 2: the covered samples, by the rule (padding lanes written back unchanged).
-      frame.Touch(cell);
+      // Step 2: the covered samples, by the rule (padding lanes written back unchanged;
+      // a cell touched first now starts as background).
+      const Int4 fresh = touched[cell] == 0 ? valid[0] : Int4{};
+      if (kRule == DepthRule::kCoverOnly && touched[cell] == 0) {
+        std::memset(depth + cell * kCount, 0, kCount * sizeof(float));
+      }
+      touched[cell] = 1;
       for (int h = 0; h < kVectors; ++h) {
         uint32_t* const laneFaces = faces + cell * kCount + 4 * h;
         Int4 storedFaces;
         std::memcpy(&storedFaces, laneFaces, sizeof storedFaces);
+        const Int4 cleared = fresh & valid[h];
+        storedFaces &= ~cleared;
         if constexpr (kRule == DepthRule::kCoverOnly) {
           storedFaces = covered[h] ? face : storedFaces;
         } else {
           float* const laneDepth = depth + cell * kCount + 4 * h;
           Float4 stored;
           std::memcpy(&stored, laneDepth, sizeof stored);
+          stored = cleared ? Float4{} : stored;
           const Float4 w = __builtin_convertvector(l12 + o12[h], Float4) * t.k0 +
                            __builtin_convertvector(l20 + o20[h], Float4) * t.k1 +
                            __builtin_convertvector(l01 + o01[h], Float4) * t.k2;
@@ -239,10 +256,12 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   // for every sample of the cells the box touches.
   const int64_t extent = std::max(int64_t{maxX} - minX, int64_t{maxY} - minY);
   const int64_t reach = extent + int64_t{std::max(K, M)} * kFixedOne;
-  // Small boxes and 1x2 cells sample by sample; the rest cell by cell where
-  // 32 bits hold every edge value, else (huge triangles) sample by sample.
+  // 1x2 cells sample by sample; the rest cell by cell where 32 bits hold every
+  // edge value, else (huge triangles) sample by sample. (Measured on
+  // sphere_cone at 2x4: cell by cell is quicker than sample by sample for
+  // small boxes too, once a cell touched first starts as background in registers.)
   const bool fits32 = 2 * extent * reach + 1 < (int64_t{1} << 31) - 1;
-  if ((col1 - col0 + 1) * (row1 - row0 + 1) <= kSmallBox || K * M <= 2 || !fits32) {
+  if (K * M <= 2 || !fits32) {
     DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
   } else {
     DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,

@@ -7,14 +7,13 @@
 
 namespace termshade {
 
-/// Draws triangles into a SampleFrame: a small box sample by sample, a
-/// bigger one cell by cell (per cell the k x m samples' edge functions from
-/// the cell's first by fixed per-sample offsets, 32-bit and four at a time
-/// where the triangle is small enough for them to be exact, whole cells
-/// skipped or taken by their corner samples). Every sample gets
-/// exactly what RasterizeTriangle gives it on the same frame stored row-major
-/// (positions in 1/256 sample, the same top-left rule, the same float depth
-/// and depth rule), with kFloatInverseZ depth. Grids 1x2, 2x2, 2x3, 2x4.
+/// Draws triangles into a SampleFrame cell by cell (per cell the k x m
+/// samples' edge functions from the cell's first by fixed per-sample offsets,
+/// 32-bit and four at a time); 1x2 cells and triangles too big for 32-bit
+/// edge values sample by sample. Every sample gets exactly what
+/// RasterizeTriangle gives it on the same frame stored row-major (positions
+/// in 1/256 sample, the same top-left rule, the same float depth and depth
+/// rule), with kFloatInverseZ depth. Grids 1x2, 2x2, 2x3, 2x4.
 class SampledRasterizer {
  public:
   /// False for a grid it has no specialisation of.

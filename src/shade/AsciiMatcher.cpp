@@ -14,6 +14,14 @@ constexpr int kProbes = 8;
 // down by (level / max)^exponent, sharpening edges inside the cell.
 constexpr double kContrastExponent = 1.5;
 
+// ceil(2^24 / d): (x * kReciprocals[d]) >> 24 is x / d for x < 2^12 and d < 2^8
+// (the error x (ceil(2^24/d) - 2^24/d) / 2^24 < x d / 2^24 < 1/d).
+constexpr std::array<uint32_t, 256> kReciprocals = [] {
+  std::array<uint32_t, 256> table{};
+  for (uint32_t d = 1; d < 256; ++d) table[d] = ((uint32_t{1} << 24) + d - 1) / d;
+  return table;
+}();
+
 uint64_t Mix(uint64_t key) {  // splitmix64's finalizer
   key ^= key >> 30;
   key *= 0xBF58476D1CE4E5B9ULL;
@@ -75,19 +83,26 @@ char32_t AsciiMatcher::MatchInk(const uint8_t* values, uint32_t covered) {
   return Match(levels);
 }
 
-char32_t AsciiMatcher::MatchShape(const uint8_t* values, uint32_t covered) {
+std::array<uint8_t, 32> AsciiMatcher::ShapeLevels(const uint8_t* values, uint32_t covered,
+                                                  int count) {
   int brightest = 1;
-  for (int n = 0; n < count_; ++n) {
-    if ((covered >> n) & 1U) brightest = std::max<int>(brightest, values[n]);
+  for (int n = 0; n < count; ++n) {
+    brightest = std::max<int>(brightest, (covered >> n) & 1U ? values[n] : 0);
   }
+  // Divisions as multiplications: values * 15 + brightest / 2 < 2^12.
+  const uint64_t reciprocal = kReciprocals[static_cast<size_t>(brightest)];
   std::array<uint8_t, 32> levels{};
-  for (int n = 0; n < count_; ++n) {
+  for (int n = 0; n < count; ++n) {
     // Covered samples are at least level 1, so a black face still shows.
-    if ((covered >> n) & 1U) {
-      levels[n] = static_cast<uint8_t>(std::max(1, (values[n] * 15 + brightest / 2) / brightest));
-    }
+    const auto scaled = static_cast<uint64_t>(values[n] * 15 + brightest / 2);
+    const auto level = static_cast<uint8_t>(std::max<uint64_t>(1, (scaled * reciprocal) >> 24));
+    levels[n] = (covered >> n) & 1U ? level : uint8_t{0};
   }
-  return Match(levels);
+  return levels;
+}
+
+char32_t AsciiMatcher::MatchShape(const uint8_t* values, uint32_t covered) {
+  return Match(ShapeLevels(values, covered, count_));
 }
 
 char32_t AsciiMatcher::Match(const std::array<uint8_t, 32>& levels) {

@@ -28,6 +28,13 @@ class AsciiMatcher {
   /// brightest one (the fg colour carries the brightness).
   char32_t MatchShape(const uint8_t* values, uint32_t covered);
 
+  /// MatchShape's sample levels: round(15 value / brightest) (at least 1) for
+  /// covered samples, 0 for the others, the brightest covered value at least 1.
+  static std::array<uint8_t, 32> ShapeLevels(const uint8_t* values, uint32_t covered, int count);
+  /// The glyph nearest these sample levels (0..15 each), searched without
+  /// the cache: what MatchInk and MatchShape return for the levels they make.
+  char32_t Nearest(const std::array<uint8_t, 32>& levels) const;
+
  private:
   static constexpr int kLevels = 16;  // quantization of a sample for the cache key
   struct Entry {
@@ -35,7 +42,6 @@ class AsciiMatcher {
     char32_t glyph = 0;  // 0: empty
   };
   char32_t Match(const std::array<uint8_t, 32>& levels);
-  char32_t Nearest(const std::array<uint8_t, 32>& levels) const;
 
   SampleGrid grid_{0, 0};
   int count_ = 0;
