@@ -33,7 +33,7 @@ SampleFrame RandomFrame(SampleGrid grid, uint32_t seed, uint32_t faceCount) {
     const uint32_t kind = random() % 8;
     if (kind == 0) continue;  // untouched
     frame.Touch(cell);
-    const uint32_t base = 1 + random() % (faceCount - 4);
+    const uint32_t base = 1 + random() % (faceCount - 6);  // base + 5 at most: a face of the table
     for (size_t n = 0; n < perCell; ++n) {
       uint32_t face = base;
       if (kind >= 3) face = random() % 5 == 0 ? 0 : base + random() % (kind - 1);
