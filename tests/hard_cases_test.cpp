@@ -116,8 +116,7 @@ TEST(HardCases, VertexJustInFrontOfTheEyeAndTriangleBehindIt) {
   mesh.AddFace(std::array<uint32_t, 3>{6, 7, 8});
   const Scene scene = PrepareScene(mesh);
   // Centered on the file origin, not the bounding box, to keep the eye where it is meant to be.
-  Scene centered = scene;
-  centered.verticesWorld = mesh.verticesFile;
+  const Scene centered = test::ShiftedScene(scene, scene.source.shiftZUp);
   const Camera camera = CameraLooking({rho, 0.0, std::numbers::pi / 2}, 1.5, rho);
   ExpectNoFaceError(centered, camera, "vertex at 1e-7 from the eye plane", true, 50);
   RenderOptions options;
@@ -125,6 +124,37 @@ TEST(HardCases, VertexJustInFrontOfTheEyeAndTriangleBehindIt) {
   for (uint32_t face : frame.cells.FaceNumbers()) {
     EXPECT_NE(face, 3U);  // wholly behind the eye: never drawn
     EXPECT_NE(face, 4U);
+  }
+}
+
+TEST(HardCases, ShiftedScenesKeepTheirClustersTrue) {
+  // A scene moved off its center (as the cases above place theirs) keeps
+  // clusters that bound where its triangles now are, and culling them
+  // changes no face.
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(20000));
+  const Scene shifted = test::ShiftedScene(sphere, {-0.8, 0.5, 0.3});
+  EXPECT_NEAR(shifted.verticesWorld[0].x, sphere.verticesWorld[0].x - 0.8, 1e-12);
+  for (const SceneCluster& cluster : shifted.clusters.clusters) {
+    for (uint32_t t = cluster.firstTriangle; t < cluster.triangleEnd; ++t) {
+      for (const uint32_t v : shifted.triangles[t].vertices) {
+        ASSERT_LE(Length(shifted.verticesWorld[v] - cluster.centerWorld), cluster.radius);
+      }
+      const FacePlane& plane = shifted.facePlanesWorld[shifted.TriangleFace(t)];
+      const double height = Dot(plane.normal, cluster.centerWorld) - plane.offset;
+      ASSERT_GE(height, cluster.heightMin - 1e-12);
+      ASSERT_LE(height, cluster.heightMax + 1e-12);
+    }
+  }
+  const Camera camera = CameraLooking({6.0, 0.7, 1.1}, 1.5, 6.0, 160, 48);
+  RenderOptions culled;
+  RenderOptions unculled;
+  unculled.variant.clusterCulling = false;
+  for (Method method : {Method::kZBuffer, Method::kCull}) {
+    culled.method = unculled.method = method;
+    const Frame a = RenderWith(shifted, camera, culled);
+    const Frame b = RenderWith(shifted, camera, unculled);
+    EXPECT_EQ(a.cells.FaceNumbers(), b.cells.FaceNumbers());
+    EXPECT_GT(a.stats.facesVisible, 100);
   }
 }
 
@@ -176,8 +206,7 @@ TEST(HardCases, ParallelPlatesAtDecreasingGaps) {
         {{{0, -2, -2}, {0, 2, -2}, {0, 2, 2}, {0, -2, 2}}},
         {{{gap, -1, -1}, {gap, 1, -1}, {gap, 1, 1}, {gap, -1, 1}}},
     }));
-    Scene centered = scene;
-    centered.verticesWorld = scene.SourceMesh().verticesFile;
+    const Scene centered = test::ShiftedScene(scene, scene.source.shiftZUp);
     const Camera camera = CameraLooking({5.0, 0.2, 1.4}, 2.9, 5.0);
     RenderOptions options;
     const Frame frame = RenderWith(centered, camera, options);

@@ -67,6 +67,20 @@ Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads) {
   return mesh;
 }
 
+Scene ShiftedScene(Scene scene, Vec3 shiftWorld) {
+  scene.radiusModelUnits = 0.0;
+  for (Vec3& p : scene.verticesWorld) {
+    p = p + shiftWorld;
+    if (IsFinite(p)) scene.radiusModelUnits = std::max(scene.radiusModelUnits, Length(p));
+  }
+  // n . p = h for every p of the plane: moved by s, h grows by n . s.
+  for (FacePlane& plane : scene.facePlanesWorld) plane.offset += Dot(plane.normal, shiftWorld);
+  scene.clusters = BuildClusters(scene);
+  scene.worldFromFile = Mat4::Translation(shiftWorld) * scene.worldFromFile;
+  scene.source.shiftZUp = scene.source.shiftZUp - shiftWorld;
+  return scene;
+}
+
 std::string FrameText(Mesh mesh) {
   mesh.upAxisFile = UpAxis::kPlusZ;
   const Scene scene = PrepareScene(std::move(mesh));

@@ -29,6 +29,11 @@ Scene LoadScene(const std::string& relative);
 /// One four-cornered face per quad, each with its own vertices.
 Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads);
 
+/// The scene moved by shiftWorld, with what depends on the vertices (face
+/// planes, clusters, radius) moved or rebuilt to match: a test's scene placed
+/// off its bounding-box center.
+Scene ShiftedScene(Scene scene, Vec3 shiftWorld);
+
 /// A rendered frame with its camera.
 struct Frame {
   Camera camera;
