@@ -1,7 +1,8 @@
 // The sampled rasterizer (cell by cell, src/raster/SampledRasterizer) gives
 // every sample exactly what the one-sample rasterizer gives it on a frame of
 // k x m times the cells: the same faces, depth and cells, for every glyph
-// mode, method, colour and view, big triangles (64-bit lanes) included.
+// mode, method, colour and view, big triangles (64-bit lanes) included, 2x4
+// cells eight lanes (AVX2, where the CPU has it) and four at a time.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -74,9 +75,14 @@ void CompareOn(const Scene& scene, const std::string& name, int cols, int rows, 
               name + " view " + std::to_string(v) + " " + std::string(MethodName(method)) + " " +
               std::string(GlyphModeName(options.glyphs)) + " flags " + std::to_string(flags) + " " +
               std::to_string(cols) + "x" + std::to_string(rows);
-          ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows),
-                     Draw(referenceRenderer, scene, camera, options, false, cols, rows),
+          const Frame reference = Draw(referenceRenderer, scene, camera, options, false, cols, rows);
+          ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows), reference,
                      options.keepDepth, what);
+          if (FrameSampleGrid(options) == SampleGrid{2, 4}) {  // the four-lane path of 2x4 cells too
+            options.variant.wideLanes = false;
+            ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows), reference,
+                       options.keepDepth, what + " four lanes");
+          }
         }
       }
     }

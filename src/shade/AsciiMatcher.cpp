@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "shade/GlyphInk.h"
 
 namespace termshade {
 namespace {
 
-constexpr size_t kCacheSize = size_t{1} << 14;
+constexpr size_t kCacheSize = size_t{1} << 12;
 constexpr int kProbes = 8;
 // Contrast enhancement (Harri): levels below the cell's brightest are pushed
 // down by (level / max)^exponent, sharpening edges inside the cell.
@@ -107,8 +108,11 @@ char32_t AsciiMatcher::MatchShape(const uint8_t* values, uint32_t covered) {
 
 char32_t AsciiMatcher::Match(const std::array<uint8_t, 32>& levels) {
   if (count_ > 16) return Nearest(levels);  // too many samples for a 64-bit key
-  uint64_t key = 0;
-  for (int n = 0; n < count_; ++n) key = (key << 4) | levels[n];
+  // The key: the levels (each below 16) as bytes, the second eight in the high nibbles.
+  uint64_t low = 0, high = 0;
+  std::memcpy(&low, levels.data(), sizeof low);
+  std::memcpy(&high, levels.data() + 8, sizeof high);
+  const uint64_t key = low | high << 4;
   const size_t home = Mix(key) & (kCacheSize - 1);
   for (int probe = 0; probe < kProbes; ++probe) {
     Entry& entry = cache_[(home + probe) & (kCacheSize - 1)];
