@@ -1,7 +1,6 @@
 #include "raster/SampledRasterizer.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -113,76 +112,12 @@ Int4 LaneOffsets(const Edge& e, int h) {
   return reinterpret_cast<Int4>(LaneColumns<K, M>(h) * stepX + LaneRows<K, M>(h) * stepY);
 }
 
-// Box cells across from which RowSpans pays.
-constexpr int kSpanCells = 3;
-
-// The cells of a cell row a triangle may cover: the cell columns of its x
-// extent over the row's sample rows, one sample wider on either side (so
-// rounding cannot drop a covered sample; every sample is still tested by its
-// edge values). Wide triangles (sloped slivers above all) leave most cells of
-// their box empty; narrow ones are not worth it.
-class RowSpans {
- public:
-  RowSpans(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, int col0, int col1,
-           int row0, int row1, int k)
-      : col0_(col0), col1_(col1), row0_(row0), row1_(row1), k_(k) {
-    if (col1 / k - col0 / k + 1 < kSpanCells) return;  // not used
-    const RasterVertex* v[3] = {&a, &b, &c};
-    for (int e = 0; e < 3; ++e) {
-      const RasterVertex& p = *v[e];
-      const RasterVertex& q = *v[(e + 1) % 3];
-      edges_[e] = {double(p.x), double(p.y), double(q.x), double(q.y),
-                   q.y != p.y ? double(int64_t{q.x} - p.x) / double(int64_t{q.y} - p.y) : 0.0};
-    }
-  }
-
-  /// Cell columns [first, last] of cell row `row` (M sample rows a cell) to visit; first > last: none.
-  void Columns(int row, int m, int& first, int& last) const {
-    const double yA = double(std::max(row * m, row0_)) * kFixedOne + kFixedHalf;
-    const double yB = double(std::min(row * m + m - 1, row1_)) * kFixedOne + kFixedHalf;
-    double xMin = 1e300, xMax = -1e300;
-    for (const EdgeLine& e : edges_) {
-      const double low = std::min(e.py, e.qy), high = std::max(e.py, e.qy);
-      if (high < yA || low > yB) continue;
-      double x0 = e.px, x1 = e.qx;
-      if (e.py != e.qy) {
-        x0 = e.px + (std::max(low, yA) - e.py) * e.slope;
-        x1 = e.px + (std::min(high, yB) - e.py) * e.slope;
-      }
-      xMin = std::min({xMin, x0, x1});
-      xMax = std::max({xMax, x0, x1});
-    }
-    if (xMin > xMax) {
-      first = 1;
-      last = 0;
-      return;
-    }
-    // Sample columns whose centers (s * 256 + 128) may lie in [xMin, xMax], a sample wider.
-    const double low = std::floor((xMin - kFixedHalf) / kFixedOne) - 1.0;
-    const double high = std::floor((xMax - kFixedHalf) / kFixedOne) + 2.0;
-    const int sampleFirst = low < col0_ ? col0_ : static_cast<int>(std::min<double>(low, col1_ + 1));
-    const int sampleLast = high > col1_ ? col1_ : static_cast<int>(std::max<double>(high, col0_ - 1));
-    first = sampleFirst / k_;
-    last = sampleLast < col0_ ? first - 1 : sampleLast / k_;
-  }
-
- private:
-  struct EdgeLine {
-    double px, py, qx, qy, slope;
-  };
-  EdgeLine edges_[3]{};
-  int col0_, col1_, row0_, row1_, k_;
-};
-
 // DrawCells with 32-bit edge values, four samples of a cell at a time: the
 // same integers, conversions and float operations, lane by lane.
 template <int K, int M, DepthRule kRule>
 void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
-                     int64_t area, uint32_t faceNumber, SampleFrame& frame, int col0, int col1,
-                     int row0, int row1) {
-  const int cellCol0 = col0 / K, cellCol1 = col1 / K, cellRow0 = row0 / M, cellRow1 = row1 / M;
-  const bool spans = cellCol1 - cellCol0 + 1 >= kSpanCells;
-  const RowSpans rowSpans(v0, v1, v2, col0, col1, row0, row1, K);
+                     int64_t area, uint32_t faceNumber, SampleFrame& frame, int cellCol0,
+                     int cellCol1, int cellRow0, int cellRow1) {
   constexpr int kCount = K * M;
   constexpr int kVectors = (kCount + 3) / 4;
   const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
@@ -203,13 +138,9 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   const size_t width = static_cast<size_t>(frame.WidthCells());
   int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
   for (int row = cellRow0; row <= cellRow1; ++row) {
-    int first = cellCol0, last = cellCol1;
-    if (spans) rowSpans.Columns(row, M, first, last);
-    const int64_t skipped = int64_t{first - cellCol0} * K;
-    int64_t b12 = row12 + skipped * e12.stepX, b20 = row20 + skipped * e20.stepX,
-            b01 = row01 + skipped * e01.stepX;
-    size_t cell = row * width + first;
-    for (int col = first; col <= last;
+    int64_t b12 = row12, b20 = row20, b01 = row01;
+    size_t cell = row * width + cellCol0;
+    for (int col = cellCol0; col <= cellCol1;
          ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
       // Step 1: the covered samples, four lanes at a time (branch-free: for
       // small triangles a test of the cell's corners first costs more than it saves).
@@ -276,11 +207,9 @@ template <int K, int M, DepthRule kRule>
 __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const RasterVertex& v1,
                                                    const RasterVertex& v2, int64_t area,
                                                    uint32_t faceNumber, SampleFrame& frame,
-                                                   int col0, int col1, int row0, int row1) {
+                                                   int cellCol0, int cellCol1, int cellRow0,
+                                                   int cellRow1) {
   static_assert(K * M == 8);
-  const int cellCol0 = col0 / K, cellCol1 = col1 / K, cellRow0 = row0 / M, cellRow1 = row1 / M;
-  const bool spans = cellCol1 - cellCol0 + 1 >= kSpanCells;
-  const RowSpans rowSpans(v0, v1, v2, col0, col1, row0, row1, K);
   const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
   const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
   const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
@@ -305,13 +234,9 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
   const size_t width = static_cast<size_t>(frame.WidthCells());
   int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
   for (int row = cellRow0; row <= cellRow1; ++row) {
-    int first = cellCol0, last = cellCol1;
-    if (spans) rowSpans.Columns(row, M, first, last);
-    const int64_t skipped = int64_t{first - cellCol0} * K;
-    int64_t b12 = row12 + skipped * e12.stepX, b20 = row20 + skipped * e20.stepX,
-            b01 = row01 + skipped * e01.stepX;
-    size_t cell = row * width + first;
-    for (int col = first; col <= last;
+    int64_t b12 = row12, b20 = row20, b01 = row01;
+    size_t cell = row * width + cellCol0;
+    for (int col = cellCol0; col <= cellCol1;
          ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
       // Step 1: the covered samples.
       const Int8 w12 = static_cast<int32_t>(b12) + o12, w20 = static_cast<int32_t>(b20) + o20,
@@ -429,11 +354,13 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   } else {
 #if defined(TERMSHADE_WIDE_CELLS)
     if constexpr (kWide && K * M == 8) {
-      DrawCellsWide<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
+      DrawCellsWide<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
+                                 row0 / M, row1 / M);
       return;
     }
 #endif
-    DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
+    DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
+                                 row0 / M, row1 / M);
   }
 }
 
