@@ -38,8 +38,8 @@ SampleFrame RandomFrame(SampleGrid grid, uint32_t seed, uint32_t faceCount) {
       uint32_t face = base;
       if (kind >= 3) face = random() % 5 == 0 ? 0 : base + random() % (kind - 1);
       if (kind == 1) face = 0;
-      frame.FaceData()[cell * frame.Stride() + n] = face;
-      frame.DepthData()[cell * frame.Stride() + n] = face == 0 ? 0.0F : 0.01F * (1 + random() % 90);
+      frame.FaceData()[cell * perCell + n] = face;
+      frame.DepthData()[cell * perCell + n] = face == 0 ? 0.0F : 0.01F * (1 + random() % 90);
     }
   }
   return frame;

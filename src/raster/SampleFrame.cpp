@@ -12,17 +12,9 @@ void SampleFrame::Begin(int widthCells, int heightCells, SampleGrid grid) {
   grid_ = grid;
   perCell_ = static_cast<size_t>(grid.Count());
   const size_t cells = static_cast<size_t>(widthCells_) * heightCells_;
-  // A cell's faces, then its depths, each padded to whole vectors of four
-  // lanes (the sampled rasterizer reads and writes them back); the last cell padded.
-  const size_t padded = (perCell_ + 3) / 4 * 4;
-  stride_ = 2 * padded;
-  const size_t bytes = (cells * stride_ + 2 * kPaddingSamples) * sizeof(uint32_t);
-  if (bytes > storageBytes_) {
-    storage_ = std::make_unique<std::byte[]>(bytes);  // zeroed: padding is read
-    storageBytes_ = bytes;
-  }
-  faces_ = reinterpret_cast<uint32_t*>(storage_.get());
-  depth_ = reinterpret_cast<float*>(storage_.get()) + padded;
+  // Padding: the sampled rasterizer reads and writes back whole vectors of lanes.
+  faces_.resize(cells * perCell_ + kPaddingSamples);
+  depth_.resize(cells * perCell_ + kPaddingSamples);
   touched_.assign(cells, 0);
 }
 
@@ -41,10 +33,9 @@ size_t SampleFrame::NextTouched(size_t cell) const {
 void SampleFrame::CopyFrom(const CellBuffer& samples, const DepthBuffer* depth) {
   const int k = grid_.across, m = grid_.down;
   std::fill(touched_.begin(), touched_.end(), uint8_t{1});
-  size_t cell = 0;
+  size_t n = 0;
   for (int row = 0; row < heightCells_; ++row) {
-    for (int col = 0; col < widthCells_; ++col, ++cell) {
-      size_t n = cell * stride_;
+    for (int col = 0; col < widthCells_; ++col) {
       for (int j = 0; j < m; ++j) {
         for (int i = 0; i < k; ++i, ++n) {
           const size_t index = samples.Index(col * k + i, row * m + j);
@@ -68,7 +59,7 @@ void SampleFrame::CopyTo(CellBuffer& samples) const {
       for (int j = 0; j < m; ++j) {
         for (int i = 0; i < k; ++i) {
           samples.FaceNumbers()[samples.Index(col * k + i, row * m + j)] =
-              Touched(cell) ? faces_[cell * stride_ + j * k + i] : 0U;
+              Touched(cell) ? faces_[cell * perCell_ + j * k + i] : 0U;
         }
       }
     }

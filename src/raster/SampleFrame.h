@@ -1,8 +1,6 @@
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -13,16 +11,13 @@
 namespace termshade {
 
 /// A frame of k x m samples a cell, stored cell by cell: cell c's samples
-/// are row-major inside the cell, each with its face number (0 =
-/// background) and w = 1/(-z_eye) (0 = nothing); a cell's faces and then
-/// its depths lie together (Stride() words from one cell to the next, 2x4
-/// cells one 64-byte line), so a frame touches one line a cell, not two. A
-/// cell no triangle reached this frame is not touched: its samples are
-/// background and are neither cleared nor read (a frame clears only the flags).
+/// are [c k m, (c + 1) k m), row-major inside the cell, each with its face
+/// number (0 = background) and w = 1/(-z_eye) (0 = nothing). A cell no
+/// triangle reached this frame is not touched: its samples are background
+/// and are neither cleared nor read (a frame clears only the flags).
 class SampleFrame {
  public:
-  /// Samples past a cell's k x m faces and depths that may be read and
-  /// written back unchanged (whole vectors of four lanes), and past the last cell.
+  /// Samples past the last cell that may be read and written back unchanged.
   static constexpr size_t kPaddingSamples = 8;
   /// Sizes the frame (keeping capacity) and marks every cell untouched.
   void Begin(int widthCells, int heightCells, SampleGrid grid);
@@ -36,25 +31,26 @@ class SampleFrame {
   size_t NextTouched(size_t cell) const;
 
   /// The cell's samples; valid only for a touched cell.
-  std::span<const uint32_t> Faces(size_t cell) const { return {faces_ + cell * stride_, perCell_}; }
-  std::span<const float> Depths(size_t cell) const { return {depth_ + cell * stride_, perCell_}; }
+  std::span<const uint32_t> Faces(size_t cell) const {
+    return {faces_.data() + cell * perCell_, perCell_};
+  }
+  std::span<const float> Depths(size_t cell) const {
+    return {depth_.data() + cell * perCell_, perCell_};
+  }
 
   /// Marks the cell touched, its samples background, the first time in a frame.
   void Touch(size_t cell) {
     if (touched_[cell] != 0) return;
     touched_[cell] = 1;
     for (size_t n = 0; n < perCell_; ++n) {
-      faces_[cell * stride_ + n] = 0;
-      depth_[cell * stride_ + n] = 0.0F;
+      faces_[cell * perCell_ + n] = 0;
+      depth_[cell * perCell_ + n] = 0.0F;
     }
   }
-  /// Words from one cell's samples to the next's (faces and depths alike):
-  /// cell c's sample n has face FaceData()[c Stride() + n], depth DepthData()[c Stride() + n].
-  size_t Stride() const { return stride_; }
-  uint32_t* FaceData() { return faces_; }
+  uint32_t* FaceData() { return faces_.data(); }
   /// One flag a cell (1: touched); a writer setting one sets the cell's samples to background.
   uint8_t* TouchedData() { return touched_.data(); }
-  float* DepthData() { return depth_; }
+  float* DepthData() { return depth_.data(); }
 
   /// Copies a row-major sample frame (a one-sample CellBuffer at k x m times the
   /// cells, with its depth unless null) in, every cell touched.
@@ -67,11 +63,8 @@ class SampleFrame {
   int heightCells_ = 0;
   SampleGrid grid_;
   size_t perCell_ = 1;
-  size_t stride_ = 2 * kPaddingSamples;
-  std::unique_ptr<std::byte[]> storage_;  ///< faces and depths, cell by cell
-  size_t storageBytes_ = 0;
-  uint32_t* faces_ = nullptr;
-  float* depth_ = nullptr;
+  std::vector<uint32_t> faces_;
+  std::vector<float> depth_;
   std::vector<uint8_t> touched_;
 };
 

@@ -134,7 +134,6 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
-  const size_t stride = frame.Stride();
   uint8_t* const touched = frame.TouchedData();
   const size_t width = static_cast<size_t>(frame.WidthCells());
   int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
@@ -159,11 +158,11 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
       // a cell touched first now starts as background).
       const Int4 fresh = touched[cell] == 0 ? valid[0] : Int4{};
       if (kRule == DepthRule::kCoverOnly && touched[cell] == 0) {
-        std::memset(depth + cell * stride, 0, kCount * sizeof(float));
+        std::memset(depth + cell * kCount, 0, kCount * sizeof(float));
       }
       touched[cell] = 1;
       for (int h = 0; h < kVectors; ++h) {
-        uint32_t* const laneFaces = faces + cell * stride + 4 * h;
+        uint32_t* const laneFaces = faces + cell * kCount + 4 * h;
         Int4 storedFaces;
         std::memcpy(&storedFaces, laneFaces, sizeof storedFaces);
         const Int4 cleared = fresh & valid[h];
@@ -171,7 +170,7 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
         if constexpr (kRule == DepthRule::kCoverOnly) {
           storedFaces = covered[h] ? face : storedFaces;
         } else {
-          float* const laneDepth = depth + cell * stride + 4 * h;
+          float* const laneDepth = depth + cell * kCount + 4 * h;
           Float4 stored;
           std::memcpy(&stored, laneDepth, sizeof stored);
           stored = cleared ? Float4{} : stored;
@@ -231,7 +230,6 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
-  const size_t stride = frame.Stride();
   uint8_t* const touched = frame.TouchedData();
   const size_t width = static_cast<size_t>(frame.WidthCells());
   int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
@@ -251,8 +249,8 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
       // Step 2: by the rule (a cell touched first now starts as background).
       const bool fresh = touched[cell] == 0;
       touched[cell] = 1;
-      uint32_t* const cellFaces = faces + cell * stride;
-      float* const cellDepth = depth + cell * stride;
+      uint32_t* const cellFaces = faces + cell * 8;
+      float* const cellDepth = depth + cell * 8;
       // A fresh cell's samples are not read: a cold line costs a miss on a load, not on a store.
       Int8 storedFaces{};
       if (!fresh) std::memcpy(&storedFaces, cellFaces, sizeof storedFaces);
@@ -289,13 +287,13 @@ template <int K, int M, DepthRule kRule>
 void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
                  int64_t area, uint32_t faceNumber, SampleFrame& frame, int col0, int col1,
                  int row0, int row1) {
+  constexpr int kCount = K * M;
   const int64_t originX = int64_t{col0} * kFixedOne + kFixedHalf;
   const int64_t originY = int64_t{row0} * kFixedOne + kFixedHalf;
   const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
   const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
-  const size_t stride = frame.Stride();
   const size_t width = static_cast<size_t>(frame.WidthCells());
   int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
   for (int row = row0; row <= row1; ++row) {
@@ -305,7 +303,7 @@ void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVer
     for (int col = col0; col <= col1; ++col) {
       if ((w12 | w20 | w01) >= 0) {
         const size_t cell = rowCells + static_cast<size_t>(col / K);
-        const size_t index = cell * stride + laneRow + col % K;
+        const size_t index = cell * kCount + laneRow + col % K;
         frame.Touch(cell);
         StoreSample<kRule>(t, w12, w20, w01, faceNumber, faces[index], depth[index]);
       }
