@@ -74,7 +74,7 @@ SamplePattern SameFace(const CellSamples& s, int count, uint32_t face) {
 template <int N>
 uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
   const SamplePattern inked = members & s.covered;
-  if constexpr (N > 0 && N < 8) {
+  if constexpr (N > 0 && N <= 8) {
     uint64_t best = 0;
     for (int i = 0; i < N; ++i) {
       const uint32_t face = s.faces[i];
@@ -107,7 +107,7 @@ constexpr std::array<uint32_t, 9> kMeanReciprocal{0,     65536, 32768, 21846, 16
 template <int N>
 Tone ToneOf(const CellSamples& s, SamplePattern members) {
   members &= LowBits(N > 0 ? N : s.count);
-  if constexpr (N > 0 && N < 8) {  // branch-free: no members gives {0, 0}
+  if constexpr (N > 0 && N <= 8) {  // branch-free: no members gives {0, 0}
     const int memberCount = BitCount(members);
     int sum = 0;
     for (int i = 0; i < N; ++i) sum += ((members >> i) & 1U) != 0 ? s.values[i] : 0;
@@ -121,9 +121,7 @@ Tone ToneOf(const CellSamples& s, SamplePattern members) {
   for (int i = 0; i < (N > 0 ? N : s.count); ++i) {
     sum += ((members >> i) & 1U) != 0 ? s.values[i] : 0;
   }
-  const auto scaled = static_cast<uint32_t>(sum + memberCount / 2);
-  const auto mean = N == 8 ? static_cast<uint8_t>((scaled * kMeanReciprocal[memberCount]) >> 16)
-                           : static_cast<uint8_t>(scaled / memberCount);
+  const auto mean = static_cast<uint8_t>((sum + memberCount / 2) / memberCount);
   // Usually the inked members show one face: no counting.
   const SamplePattern inked = members & s.covered;
   if (inked == 0) return {0, mean};
