@@ -187,7 +187,7 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   const size_t cellCount = sampleFrame_.CellCount();
   for (size_t cell = sampleFrame_.NextTouched(0); cell < cellCount;
        cell = sampleFrame_.NextTouched(cell + 1)) {
-    if (seenFaces_.size() < seen + perCell) seenFaces_.resize(2 * (seen + perCell));
+    if (seenFaces_.size() < seen + perCell) seenFaces_.resize(seen + perCell);  // grows as push_back
     uint32_t* const list = seenFaces_.data();
     for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
       const uint32_t face = faceNumber == 0 ? static_cast<uint32_t>(faceCount) : faceNumber - 1;
