@@ -97,6 +97,32 @@ TEST(SampledRasterizer, EverySampleAsTheOneSampleRasterizerOnShippedScenes) {
   }
 }
 
+TEST(SampledRasterizer, ARendererMovedToAnotherSceneDrawsAsAFreshOne) {
+  // What one scene's frames leave in a renderer (face tables sized for its faces) must not
+  // show in another's, whichever has more faces.
+  std::vector<Scene> scenes;
+  for (const std::string& name : GeneratedSceneNames()) {
+    scenes.push_back(test::LoadScene("data/" + name + ".dat"));
+  }
+  for (int m = 0; m < kGlyphModeCount; ++m) {
+    RenderOptions options;
+    options.glyphs = static_cast<GlyphMode>(m);
+    Renderer moved;
+    for (const Scene& first : scenes) {
+      for (const Scene& second : scenes) {
+        const Camera firstCamera =
+            FitCamera(first, DefaultView(first.diagonalModelUnits), 48, 16, 2.0);
+        const Camera camera = FitCamera(second, DefaultView(second.diagonalModelUnits), 48, 16, 2.0);
+        Draw(moved, first, firstCamera, options, true, 48, 16);
+        Renderer fresh;
+        ExpectSame(Draw(moved, second, camera, options, true, 48, 16),
+                   Draw(fresh, second, camera, options, true, 48, 16), false,
+                   std::string(GlyphModeName(options.glyphs)));
+      }
+    }
+  }
+}
+
 TEST(SampledRasterizer, BigTrianglesAndTheEyeCloseUp) {
   // Close up, triangles span hundreds of samples (64-bit lanes) and cross the near plane.
   for (const std::string& name : {std::string("cube"), std::string("sphere_cone")}) {

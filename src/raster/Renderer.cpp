@@ -198,6 +198,7 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
     }
   }
   seenFaces_.resize(seen);
+  faceLevels_[faceCount] = -1;  // every level -1 between frames, as BeginSeenFaces expects
   ShadeSeenFaces(scene, single);
   stats.facesVisible = EndSeenFaces();
   return stats;
