@@ -1,7 +1,8 @@
 // The sampled rasterizer (cell by cell, src/raster/SampledRasterizer) gives
 // every sample exactly what the one-sample rasterizer gives it on a frame of
 // k x m times the cells: the same faces, depth and cells, for every glyph
-// mode, method, colour and view, big triangles (64-bit lanes) included.
+// mode, method, colour and view, big triangles (64-bit lanes) included, 2x4
+// cells eight lanes (AVX2, where the CPU has it) and four at a time.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -74,9 +75,14 @@ void CompareOn(const Scene& scene, const std::string& name, int cols, int rows, 
               name + " view " + std::to_string(v) + " " + std::string(MethodName(method)) + " " +
               std::string(GlyphModeName(options.glyphs)) + " flags " + std::to_string(flags) + " " +
               std::to_string(cols) + "x" + std::to_string(rows);
-          ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows),
-                     Draw(referenceRenderer, scene, camera, options, false, cols, rows),
+          const Frame reference = Draw(referenceRenderer, scene, camera, options, false, cols, rows);
+          ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows), reference,
                      options.keepDepth, what);
+          if (FrameSampleGrid(options) == SampleGrid{2, 4}) {  // the four-lane path of 2x4 cells too
+            options.variant.wideLanes = false;
+            ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows), reference,
+                       options.keepDepth, what + " four lanes");
+          }
         }
       }
     }
@@ -88,6 +94,32 @@ TEST(SampledRasterizer, EverySampleAsTheOneSampleRasterizerOnShippedScenes) {
     const Scene scene = test::LoadScene("data/" + name + ".dat");
     CompareOn(scene, name, 48, 16, 1.0);
     CompareOn(scene, name, 97, 31, 1.0);
+  }
+}
+
+TEST(SampledRasterizer, ARendererMovedToAnotherSceneDrawsAsAFreshOne) {
+  // What one scene's frames leave in a renderer (face tables sized for its faces) must not
+  // show in another's, whichever has more faces.
+  std::vector<Scene> scenes;
+  for (const std::string& name : GeneratedSceneNames()) {
+    scenes.push_back(test::LoadScene("data/" + name + ".dat"));
+  }
+  for (int m = 0; m < kGlyphModeCount; ++m) {
+    RenderOptions options;
+    options.glyphs = static_cast<GlyphMode>(m);
+    Renderer moved;
+    for (const Scene& first : scenes) {
+      for (const Scene& second : scenes) {
+        const Camera firstCamera =
+            FitCamera(first, DefaultView(first.diagonalModelUnits), 48, 16, 2.0);
+        const Camera camera = FitCamera(second, DefaultView(second.diagonalModelUnits), 48, 16, 2.0);
+        Draw(moved, first, firstCamera, options, true, 48, 16);
+        Renderer fresh;
+        ExpectSame(Draw(moved, second, camera, options, true, 48, 16),
+                   Draw(fresh, second, camera, options, true, 48, 16), false,
+                   std::string(GlyphModeName(options.glyphs)));
+      }
+    }
   }
 }
 

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "shade/BlockGlyphs.h"
 
@@ -30,8 +33,16 @@ SamplePattern LowBits(int count) {
   return count >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << count) - 1;
 }
 
+// Set bits of a byte.
+constexpr std::array<uint8_t, 256> kByteBits = [] {
+  std::array<uint8_t, 256> table{};
+  for (int b = 1; b < 256; ++b) table[b] = static_cast<uint8_t>((b & 1) + table[b >> 1]);
+  return table;
+}();
+
 // Set bits of a pattern, inline (std::popcount calls libgcc on baseline x86-64).
 int BitCount(SamplePattern bits) {
+  if (bits < 256) return kByteBits[bits];  // up to 8 samples: one load
   bits = bits - ((bits >> 1) & 0x55555555U);
   bits = (bits & 0x33333333U) + ((bits >> 2) & 0x33333333U);
   return static_cast<int>((((bits + (bits >> 4)) & 0x0F0F0F0FU) * 0x01010101U) >> 24);
@@ -40,6 +51,16 @@ int BitCount(SamplePattern bits) {
 // The samples (of the first `count`) showing `face`, as bits.
 template <int N>  // N > 0: the count known to the compiler
 SamplePattern SameFace(const CellSamples& s, int count, uint32_t face) {
+#if defined(__SSE2__)
+  if constexpr (N == 8) {  // two compares of four lanes
+    const __m128i wanted = _mm_set1_epi32(static_cast<int>(face));
+    const __m128i low = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s.faces.data()));
+    const __m128i high = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s.faces.data() + 4));
+    const int lowBits = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(low, wanted)));
+    const int highBits = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(high, wanted)));
+    return static_cast<SamplePattern>(lowBits | highBits << 4);
+  }
+#endif
   SamplePattern same = 0;
   for (int j = 0; j < (N > 0 ? N : count); ++j) {
     same |= static_cast<SamplePattern>(s.faces[j] == face) << j;
@@ -48,7 +69,7 @@ SamplePattern SameFace(const CellSamples& s, int count, uint32_t face) {
 }
 
 // The face most members show (lower number on a tie): one pass of
-// branch-free comparisons per distinct face; with the count known, one
+// branch-free comparisons per distinct face; with a small count known, one
 // branch-free pass per sample (the largest of count << 32 | ~face).
 template <int N>
 uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
@@ -74,6 +95,7 @@ uint32_t MajorityFace(const CellSamples& s, SamplePattern members) {
       bestFace = face;
       bestCount = count;
     }
+    if (bestCount > BitCount(left)) break;  // no face left can reach it
   }
   return bestFace;
 }

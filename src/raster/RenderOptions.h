@@ -48,6 +48,9 @@ struct RenderVariant {
   /// stage's layout (src/raster/SampledRasterizer); false: drawn as a one-sample
   /// frame k x m times the size, then reordered. The same samples either way.
   bool sampledRasterizer = true;
+  /// The sampled rasterizer's 2x4 cells eight lanes at a time (AVX2) where the
+  /// CPU has them; false: four at a time (SSE2). The same samples either way.
+  bool wideLanes = true;
 };
 
 /// Everything about how a frame is drawn that is not the camera.

@@ -169,24 +169,36 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
                                       const RenderOptions& single) {
   clipPlanes_ = MakeViewClipPlanes(fine.projection, NearDistance(scene));
   eyeWorld_ = EyePositionWorld(fine.view);
-  SampledRasterizer rasterizer(sampleFrame_, SurfaceRule(single));
+  SampledRasterizer rasterizer(sampleFrame_, SurfaceRule(single), single.variant.wideLanes);
   SampleSink sink(rasterizer);
   RenderStats stats;
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
   BeginSeenFaces(scene);
-  // A cell's samples alternate between faces: no run test, one branch that is
-  // seldom taken (a face not seen yet).
+  // The faces the samples show, without a branch a sample (where faces are
+  // first seen is unpredictable): background looks up a slot past the faces
+  // that reads as seen; every sample's face is written to the list, which
+  // grows only by the new ones.
+  const size_t faceCount = scene.FaceCount();
+  faceLevels_.resize(faceCount + 1);
+  faceLevels_[faceCount] = 0;
   int16_t* const levels = faceLevels_.data();
+  const size_t perCell = static_cast<size_t>(sampleFrame_.Grid().Count());
+  size_t seen = 0;
   const size_t cellCount = sampleFrame_.CellCount();
   for (size_t cell = sampleFrame_.NextTouched(0); cell < cellCount;
        cell = sampleFrame_.NextTouched(cell + 1)) {
+    if (seenFaces_.size() < seen + perCell) seenFaces_.resize(seen + perCell);  // grows as push_back
+    uint32_t* const list = seenFaces_.data();
     for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
-      if (faceNumber != 0 && levels[faceNumber - 1] == -1) {
-        levels[faceNumber - 1] = 0;
-        seenFaces_.push_back(faceNumber - 1);
-      }
+      const uint32_t face = faceNumber == 0 ? static_cast<uint32_t>(faceCount) : faceNumber - 1;
+      const bool isNew = levels[face] == -1;
+      levels[face] = 0;
+      list[seen] = face;
+      seen += isNew ? 1 : 0;
     }
   }
+  seenFaces_.resize(seen);
+  faceLevels_[faceCount] = -1;  // every level -1 between frames, as BeginSeenFaces expects
   ShadeSeenFaces(scene, single);
   stats.facesVisible = EndSeenFaces();
   return stats;

@@ -41,7 +41,7 @@ struct Setup {
   float k0, k1, k2;    // as DepthInterpolator<kFloatInverseZ>
 };
 
-Setup MakeSetup(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
+inline __attribute__((always_inline)) Setup MakeSetup(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
                 int64_t area, int64_t originX, int64_t originY) {
   const float invArea = 1.0F / static_cast<float>(area);
   return {MakeEdge(v1, v2, originX, originY),
@@ -83,6 +83,7 @@ bool AnyLane(Int4 mask) {
 }
 
 typedef uint32_t UInt4 __attribute__((vector_size(16)));
+typedef uint32_t UInt8 __attribute__((vector_size(32)));
 
 // Vector h's lanes: the column and row of each sample in the cell, 0 for padding.
 template <int K, int M>
@@ -193,6 +194,97 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
   }
 }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#define TERMSHADE_WIDE_CELLS 1
+// DrawCellsVector for 8 samples a cell with AVX2: a cell's samples in one
+// register of eight lanes (the same integers, conversions and float
+// operations lane by lane; no FMA, so products and sums round as before).
+typedef int32_t Int8 __attribute__((vector_size(32)));
+typedef float Float8 __attribute__((vector_size(32)));
+typedef long long Long4 __attribute__((vector_size(32)));  // NOLINT(google-runtime-int): ptest's type
+
+template <int K, int M, DepthRule kRule>
+__attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const RasterVertex& v1,
+                                                   const RasterVertex& v2, int64_t area,
+                                                   uint32_t faceNumber, SampleFrame& frame,
+                                                   int cellCol0, int cellCol1, int cellRow0,
+                                                   int cellRow1) {
+  static_assert(K * M == 8);
+  const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
+  const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
+  const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
+  const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
+  // Each lane's offset from the cell's first sample: i stepX + j stepY (32 bits, wrapping).
+  Int8 columns, rows;
+  for (int l = 0; l < 8; ++l) {
+    columns[l] = l % K;
+    rows[l] = l / K;
+  }
+  const UInt8 i = reinterpret_cast<UInt8>(columns), j = reinterpret_cast<UInt8>(rows);
+  const auto o12 = reinterpret_cast<Int8>(i * static_cast<uint32_t>(e12.stepX) +
+                                          j * static_cast<uint32_t>(e12.stepY));
+  const auto o20 = reinterpret_cast<Int8>(i * static_cast<uint32_t>(e20.stepX) +
+                                          j * static_cast<uint32_t>(e20.stepY));
+  const auto o01 = reinterpret_cast<Int8>(i * static_cast<uint32_t>(e01.stepX) +
+                                          j * static_cast<uint32_t>(e01.stepY));
+  const auto face = static_cast<int32_t>(faceNumber);
+  uint32_t* const faces = frame.FaceData();
+  float* const depth = frame.DepthData();
+  uint8_t* const touched = frame.TouchedData();
+  const size_t width = static_cast<size_t>(frame.WidthCells());
+  int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
+  for (int row = cellRow0; row <= cellRow1; ++row) {
+    int64_t b12 = row12, b20 = row20, b01 = row01;
+    size_t cell = row * width + cellCol0;
+    for (int col = cellCol0; col <= cellCol1;
+         ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
+      // Step 1: the covered samples.
+      const Int8 w12 = static_cast<int32_t>(b12) + o12, w20 = static_cast<int32_t>(b20) + o20,
+                 w01 = static_cast<int32_t>(b01) + o01;
+      const Int8 covered = (w12 | w20 | w01) >= 0;
+      // Step 2: by the rule, without branches (which the cells' coverage makes
+      // unpredictable; measured after another mode's frame, 9% quicker, 5%
+      // slower when the same frames repeat): a cell no sample reaches is
+      // written back as it was, or as background if untouched (and stays untouched).
+      const bool any = __builtin_ia32_ptestz256(reinterpret_cast<Long4>(covered),
+                                                reinterpret_cast<Long4>(covered)) == 0;
+      const Int8 kept = touched[cell] != 0 ? ~Int8{} : Int8{};
+      touched[cell] |= static_cast<uint8_t>(any);
+      uint32_t* const cellFaces = faces + cell * 8;
+      float* const cellDepth = depth + cell * 8;
+      Int8 storedFaces;
+      std::memcpy(&storedFaces, cellFaces, sizeof storedFaces);
+      storedFaces &= kept;
+      if constexpr (kRule == DepthRule::kCoverOnly) {
+        Int8 storedDepth;
+        std::memcpy(&storedDepth, cellDepth, sizeof storedDepth);
+        storedDepth &= kept;
+        std::memcpy(cellDepth, &storedDepth, sizeof storedDepth);
+        storedFaces = covered ? face : storedFaces;
+      } else {
+        Float8 stored;
+        std::memcpy(&stored, cellDepth, sizeof stored);
+        stored = kept ? stored : Float8{};
+        const Float8 w = __builtin_convertvector(w12, Float8) * t.k0 +
+                         __builtin_convertvector(w20, Float8) * t.k1 +
+                         __builtin_convertvector(w01, Float8) * t.k2;
+        Int8 wins = covered;
+        if constexpr (kRule == DepthRule::kNearestWins) {
+          wins &= (w > stored) | ((w == stored) & (face < storedFaces));
+        }
+        stored = wins ? w : stored;
+        storedFaces = wins ? face : storedFaces;
+        std::memcpy(cellDepth, &stored, sizeof stored);
+      }
+      std::memcpy(cellFaces, &storedFaces, sizeof storedFaces);
+    }
+    row12 += M * e12.stepY;
+    row20 += M * e20.stepY;
+    row01 += M * e01.stepY;
+  }
+}
+#endif
+
 // RasterizeTriangle's step 4 sample by sample over the box, each sample
 // written at its place in the cell-major frame: small triangles, whose box
 // holds few samples.
@@ -230,7 +322,7 @@ void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVer
   }
 }
 
-template <int K, int M, DepthRule kRule>
+template <int K, int M, DepthRule kRule, bool kWide>
 void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                   uint32_t faceNumber, SampleFrame& frame) {
   // Step 1: the samples the bounding box holds, as RasterizeTriangle finds them.
@@ -264,22 +356,34 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   if (K * M <= 2 || !fits32) {
     DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
   } else {
+#if defined(TERMSHADE_WIDE_CELLS)
+    if constexpr (kWide && K * M == 8) {
+      DrawCellsWide<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
+                                 row0 / M, row1 / M);
+      return;
+    }
+#endif
     DrawCellsVector<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
                                  row0 / M, row1 / M);
   }
 }
 
-template <int K, int M>
+template <int K, int M, bool kWide>
 SampledRasterizer::DrawFunction ForRule(DepthRule rule) {
   switch (rule) {
     case DepthRule::kCoverOnly:
-      return DrawTriangle<K, M, DepthRule::kCoverOnly>;
+      return DrawTriangle<K, M, DepthRule::kCoverOnly, kWide>;
     case DepthRule::kOverwrite:
-      return DrawTriangle<K, M, DepthRule::kOverwrite>;
+      return DrawTriangle<K, M, DepthRule::kOverwrite, kWide>;
     case DepthRule::kNearestWins:
       break;
   }
-  return DrawTriangle<K, M, DepthRule::kNearestWins>;
+  return DrawTriangle<K, M, DepthRule::kNearestWins, kWide>;
+}
+
+template <int K, int M>
+SampledRasterizer::DrawFunction ForRule(DepthRule rule, bool wide) {
+  return wide ? ForRule<K, M, true>(rule) : ForRule<K, M, false>(rule);
 }
 
 }  // namespace
@@ -289,12 +393,22 @@ bool SampledRasterizer::Supports(SampleGrid grid) {
          grid == SampleGrid{2, 4};
 }
 
-SampledRasterizer::SampledRasterizer(SampleFrame& frame, DepthRule rule) : frame_(frame) {
+bool SampledRasterizer::WideAvailable() {
+#if defined(TERMSHADE_WIDE_CELLS)
+  return __builtin_cpu_supports("avx2") != 0;
+#else
+  return false;
+#endif
+}
+
+SampledRasterizer::SampledRasterizer(SampleFrame& frame, DepthRule rule, bool wide)
+    : frame_(frame) {
+  wide = wide && WideAvailable();
   const SampleGrid g = frame.Grid();
-  if (g == SampleGrid{1, 2}) draw_ = ForRule<1, 2>(rule);
-  if (g == SampleGrid{2, 2}) draw_ = ForRule<2, 2>(rule);
-  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3>(rule);
-  if (g == SampleGrid{2, 4}) draw_ = ForRule<2, 4>(rule);
+  if (g == SampleGrid{1, 2}) draw_ = ForRule<1, 2, false>(rule);
+  if (g == SampleGrid{2, 2}) draw_ = ForRule<2, 2, false>(rule);
+  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3, false>(rule);
+  if (g == SampleGrid{2, 4}) draw_ = ForRule<2, 4>(rule, wide);
 }
 
 }  // namespace termshade

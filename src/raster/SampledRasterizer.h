@@ -19,8 +19,12 @@ class SampledRasterizer {
   /// False for a grid it has no specialisation of.
   static bool Supports(SampleGrid grid);
 
+  /// Whether this CPU runs the eight-lane (AVX2) path of 2x4 cells.
+  static bool WideAvailable();
+
   /// Draws into `frame` (which Begin has sized) by `rule`; grid: Supports.
-  SampledRasterizer(SampleFrame& frame, DepthRule rule);
+  /// wide: 2x4 cells eight lanes at a time where WideAvailable (same samples).
+  SampledRasterizer(SampleFrame& frame, DepthRule rule, bool wide = true);
 
   /// One triangle, corners in sample coordinates (1/256 sample fixed point).
   void Draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "shade/GlyphInk.h"
 
 namespace termshade {
 namespace {
 
-constexpr size_t kCacheSize = size_t{1} << 14;
+constexpr size_t kCacheSize = size_t{1} << 12;
 constexpr int kProbes = 8;
 // Contrast enhancement (Harri): levels below the cell's brightest are pushed
 // down by (level / max)^exponent, sharpening edges inside the cell.
@@ -73,9 +74,38 @@ void AsciiMatcher::Prepare(SampleGrid grid) {
     }
   }
   cache_.assign(kCacheSize, Entry{});
+  // Step 3: the levels of a value, as tables (a row per brightest value for ShapeLevels).
+  for (int value = 0; value < 256; ++value) {
+    inkLevels_[value] = static_cast<uint8_t>((value * 15 + 127) / 255);
+  }
+  if (shapeLevels_.empty()) {
+    shapeLevels_.resize(256 * 256);
+    for (int brightest = 1; brightest < 256; ++brightest) {
+      for (int value = 0; value <= brightest; ++value) {
+        const std::array<uint8_t, 2> pair{static_cast<uint8_t>(brightest),
+                                          static_cast<uint8_t>(value)};
+        shapeLevels_[brightest * 256 + value] = ShapeLevels(pair.data(), 3U, 2)[1];
+      }
+    }
+  }
+}
+
+uint64_t AsciiMatcher::ByteKey(const uint8_t* row, const uint8_t* values, uint32_t covered) const {
+  uint64_t key = 0;
+  const auto add = [&](int n) {
+    const uint64_t level = row[values[n]] & (0U - ((covered >> n) & 1U));
+    key |= level << (8 * n);
+  };
+  if (count_ == 8) {
+    for (int n = 0; n < 8; ++n) add(n);
+  } else {
+    for (int n = 0; n < count_; ++n) add(n);
+  }
+  return key;
 }
 
 char32_t AsciiMatcher::MatchInk(const uint8_t* values, uint32_t covered) {
+  if (count_ <= 8) return MatchKey(ByteKey(inkLevels_.data(), values, covered), nullptr);
   std::array<uint8_t, 32> levels{};
   for (int n = 0; n < count_; ++n) {
     if ((covered >> n) & 1U) levels[n] = static_cast<uint8_t>((values[n] * 15 + 127) / 255);
@@ -102,24 +132,44 @@ std::array<uint8_t, 32> AsciiMatcher::ShapeLevels(const uint8_t* values, uint32_
 }
 
 char32_t AsciiMatcher::MatchShape(const uint8_t* values, uint32_t covered) {
+  if (count_ <= 8) {  // ShapeLevels by table, the key built in registers
+    int brightest = 1;
+    for (int n = 0; n < count_; ++n) {
+      brightest = std::max<int>(brightest, (covered >> n) & 1U ? values[n] : 0);
+    }
+    return MatchKey(ByteKey(&shapeLevels_[static_cast<size_t>(brightest) * 256], values, covered),
+                    nullptr);
+  }
   return Match(ShapeLevels(values, covered, count_));
 }
 
 char32_t AsciiMatcher::Match(const std::array<uint8_t, 32>& levels) {
   if (count_ > 16) return Nearest(levels);  // too many samples for a 64-bit key
-  uint64_t key = 0;
-  for (int n = 0; n < count_; ++n) key = (key << 4) | levels[n];
+  // The key: the levels (each below 16) as bytes, the second eight in the high nibbles.
+  uint64_t low = 0, high = 0;
+  std::memcpy(&low, levels.data(), sizeof low);
+  std::memcpy(&high, levels.data() + 8, sizeof high);
+  return MatchKey(low | high << 4, &levels);
+}
+
+char32_t AsciiMatcher::MatchKey(uint64_t key, const std::array<uint8_t, 32>* levels) {
+  const auto nearest = [&] {
+    if (levels != nullptr) return Nearest(*levels);
+    std::array<uint8_t, 32> bytes{};  // up to 8 samples: the key's bytes
+    std::memcpy(bytes.data(), &key, sizeof key);
+    return Nearest(bytes);
+  };
   const size_t home = Mix(key) & (kCacheSize - 1);
   for (int probe = 0; probe < kProbes; ++probe) {
     Entry& entry = cache_[(home + probe) & (kCacheSize - 1)];
     if (entry.glyph != 0 && entry.key == key) return entry.glyph;
     if (entry.glyph == 0) {
-      entry = {key, Nearest(levels)};
+      entry = {key, nearest()};
       return entry.glyph;
     }
   }
   Entry& entry = cache_[home];  // full: replace the home slot
-  entry = {key, Nearest(levels)};
+  entry = {key, nearest()};
   return entry.glyph;
 }
 

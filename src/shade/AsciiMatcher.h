@@ -42,6 +42,10 @@ class AsciiMatcher {
     char32_t glyph = 0;  // 0: empty
   };
   char32_t Match(const std::array<uint8_t, 32>& levels);
+  /// Match for a cache key (the levels as bytes, the second eight in the high nibbles).
+  char32_t MatchKey(uint64_t key, const std::array<uint8_t, 32>* levels);
+  /// Up to 8 samples: the levels as bytes of a key, level = row[value], 0 where not covered.
+  uint64_t ByteKey(const uint8_t* row, const uint8_t* values, uint32_t covered) const;
 
   SampleGrid grid_{0, 0};
   int count_ = 0;
@@ -50,6 +54,8 @@ class AsciiMatcher {
   int inkScale_ = 0;          ///< the most mean ink a glyph has, 0..255
   std::array<std::array<int, kLevels>, kLevels> enhanced_{};  ///< [level][cell's max level]
   std::vector<Entry> cache_;
+  std::array<uint8_t, 256> inkLevels_{};  ///< MatchInk's level by value
+  std::vector<uint8_t> shapeLevels_;      ///< ShapeLevels' level by [brightest][value]
 };
 
 }  // namespace termshade
