@@ -50,13 +50,13 @@ TEST(BinaryStlReader, NumbersVerticesInFirstOccurrenceOrder) {
 // (files past 4 MiB) and frees it: the same mesh as from a view, bit for bit.
 TEST(BinaryStlReader, OwnedFileGivesTheSameMeshAndIsFreed) {
   const Mesh sphere = GenerateTriangleSphere(300000);
-  std::string owned = ExportMesh(sphere, ExportFormat::kStl);
-  ASSERT_GT(owned.size(), size_t{8} << 20);
-  const std::string copy = owned;
+  const std::string copy = ExportMesh(sphere, ExportFormat::kStl);
+  ASSERT_GT(copy.size(), size_t{8} << 20);
+  FileBytes owned(copy);
   Loaded<Mesh> fromView = ReadBinaryStl(copy, "sphere.stl");
-  Loaded<Mesh> fromOwned = ReadBinaryStl(owned, "sphere.stl", &owned);
+  Loaded<Mesh> fromOwned = ReadBinaryStl(owned.View(), "sphere.stl", &owned);
   ASSERT_TRUE(fromView.Ok() && fromOwned.Ok());
-  EXPECT_TRUE(owned.empty());
+  EXPECT_EQ(owned.Size(), 0U);
   const Mesh &a = fromView.Value(), &b = fromOwned.Value();
   EXPECT_EQ(a.faceCorners, b.faceCorners);
   EXPECT_EQ(a.faceStarts, b.faceStarts);

@@ -31,7 +31,7 @@ bool BinaryStlHasColours(std::string_view bytes) {
   return bytes.substr(0, kHeaderBytes).find("COLOR=") != std::string_view::npos;
 }
 
-Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std::string* owned) {
+Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, FileBytes* owned) {
   if (!IsBinaryStlLayout(bytes)) {
     return LoadError{path, 0, 0, "not a binary STL (size is not 84 + 50 x triangle count)"};
   }
@@ -63,20 +63,14 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std:
   mesh.verticesFile.reserve(vertexCount);
   AdviseHugePages(mesh.verticesFile);
   // An owned file's records already read are handed back as the vertices
-  // grow, in whole 2 MiB pages, so what reuses them later faults in huge pages.
-  constexpr size_t kHugePage = size_t{1} << 21;
-  const auto start = owned != nullptr ? reinterpret_cast<uintptr_t>(owned->data()) : 0;
-  // The offset of the last huge-page boundary at or below offset (0 if none).
-  const auto boundaryBelow = [start](size_t offset) -> size_t {
-    const uintptr_t boundary = (start + offset) & ~uintptr_t{kHugePage - 1};
-    return boundary < start ? 0 : boundary - start;
-  };
-  size_t released = boundaryBelow(kHugePage - 1);  // the first boundary
+  // grow, 4 MiB at a time.
+  constexpr size_t kReleaseBytes = size_t{4} << 20;
+  size_t released = 0;
   for (size_t i = 0; i < cornerCount; ++i) {
     if (owned != nullptr && i % 3 == 0) {
-      const size_t readTo = boundaryBelow(kFirstRecord + (i / 3) * kRecordBytes);
-      if (readTo >= released + 2 * kHugePage) {
-        ReleasePages(owned->data() + released, readTo - released);
+      const size_t readTo = kFirstRecord + (i / 3) * kRecordBytes;
+      if (readTo >= released + kReleaseBytes) {
+        owned->Release(released, readTo);
         released = readTo;
       }
     }
@@ -91,7 +85,7 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std:
     mesh.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
   }
 
-  if (owned != nullptr) FreeAndReleasePages(*owned);
+  if (owned != nullptr) owned->Free();
 
   // Step 3: one face per triangle in file order.
   mesh.faceStarts.reserve(triangles + 1);

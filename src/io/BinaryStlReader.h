@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "geometry/Mesh.h"
+#include "io/FileBytes.h"
 #include "io/LoadError.h"
 
 namespace termshade {
@@ -19,9 +20,9 @@ bool BinaryStlHasColours(std::string_view bytes);
 /// Reads a binary STL of that layout into one face per triangle, in file
 /// order. Exactly equal positions become one vertex (meshoptimizer's remap,
 /// first occurrence first), so shared edges are shared in the mesh. owned,
-/// when given, is the string bytes views: its pages are handed back as they
+/// when given, holds the bytes viewed: its pages are handed back as they
 /// are read, and it is freed (empty) once the mesh has the vertices.
 Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path,
-                           std::string* owned = nullptr);
+                           FileBytes* owned = nullptr);
 
 }  // namespace termshade

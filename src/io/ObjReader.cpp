@@ -269,7 +269,7 @@ std::string MemoryBudgetMessage(uint64_t neededBytes, uint64_t budgetBytes) {
 }  // namespace
 
 std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
-                                    size_t memoryBudgetBytes, std::string* owned) {
+                                    size_t memoryBudgetBytes, FileBytes* owned) {
   constexpr size_t kBytesPerItem = 64;  // about a line
   return ReadObjInChunks(text, path, memoryBudgetBytes,
                          static_cast<size_t>(LoadThreadCount(text.size() / kBytesPerItem)), owned);
@@ -277,7 +277,7 @@ std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& pa
 
 std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::string& path,
                                             size_t memoryBudgetBytes, size_t chunkCount,
-                                            std::string* owned) {
+                                            FileBytes* owned) {
   // Step 1: chunks of whole lines, one a thread; their counts, and whether the importer is needed.
   const std::vector<std::string_view> texts = SplitAtLines(text, std::max<size_t>(1, chunkCount));
   std::vector<ObjChunk> chunks(texts.size());
@@ -337,7 +337,7 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
   }
 
   // Step 3: faces and segments in file order; an owned file is freed first.
-  if (owned != nullptr) FreeAndReleasePages(*owned);
+  if (owned != nullptr) owned->Free();
   MergeChunks(chunks, spans, mesh);
   mesh.edgeHidden.reserve(mesh.faceCorners.size());
   AdviseHugePages(mesh.edgeHidden);
