@@ -56,7 +56,19 @@ class EdgeAdjacency {
   /// order; the uses are sorted by face.
   template <typename Visit>
   void ForEachEdge(Visit&& visit) const {
-    for (uint32_t low = 0; low + 1 < starts_.size(); ++low) {
+    ForEachEdgeFrom(0, VertexCount(), visit);
+  }
+
+  /// The vertices the edges are numbered over.
+  uint32_t VertexCount() const {
+    return starts_.empty() ? 0 : static_cast<uint32_t>(starts_.size() - 1);
+  }
+
+  /// ForEachEdge for the edges whose smaller vertex is in [lowBegin, lowEnd):
+  /// disjoint ranges split the edges (for threads).
+  template <typename Visit>
+  void ForEachEdgeFrom(uint32_t lowBegin, uint32_t lowEnd, Visit&& visit) const {
+    for (uint32_t low = lowBegin; low < lowEnd; ++low) {
       const EdgeUse* use = uses_.data() + starts_[low];
       const EdgeUse* const end = uses_.data() + starts_[low + 1];
       while (use != end) {

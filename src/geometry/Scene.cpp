@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -108,21 +109,44 @@ bool FacesAreTheTriangles(const Scene& scene, const FaceList& faces) {
   return true;
 }
 
-// Whether the faces form a closed (every edge used once each way) connected
-// surface, convex at every edge (each face's corners on or behind its
-// neighbour's plane): a convex solid, where facing decides visibility. The
-// planes are those Step 4 stores, computed here per edge so no face pairs
-// need be kept.
-bool ConvexClosedSurface(const std::vector<Vec3>& verticesWorld, const FaceList& faces,
-                         const EdgeAdjacency& adjacency, double diagonalModelUnits) {
+// Step 1 of ConvexClosedSurface: every edge used once each way, and the
+// faces connected through them.
+bool OneClosedPart(const FaceList& faces, const EdgeAdjacency& adjacency) {
   const size_t faceCount = faces.FaceCount();
-  if (faceCount < 4) return false;
   std::vector<uint32_t> component(faceCount);
   for (uint32_t f = 0; f < faceCount; ++f) component[f] = f;
   auto root = [&](uint32_t f) {
     while (component[f] != f) f = component[f] = component[component[f]];
     return f;
   };
+  bool closed = true;
+  adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
+    if (!closed) return;
+    if (uses.size() != 2 || uses[0].Forward() == uses[1].Forward()) {
+      closed = false;  // open, non-manifold or inconsistently wound
+      return;
+    }
+    component[root(uses[0].Face())] = root(uses[1].Face());
+  });
+  if (!closed) return false;
+  for (uint32_t f = 0; f < faceCount; ++f) {
+    if (root(f) != root(0)) return false;
+  }
+  return true;
+}
+
+// Whether the faces form a closed (every edge used once each way) connected
+// surface, convex at every edge (each face's corners on or behind its
+// neighbour's plane): a convex solid, where facing decides visibility. The
+// planes are those Step 4 stores, computed here per edge so no face pairs
+// need be kept, the edges split over the load threads.
+// oneClosedPart: the answer to step 1 when already known.
+bool ConvexClosedSurface(const std::vector<Vec3>& verticesWorld, const FaceList& faces,
+                         const EdgeAdjacency& adjacency, double diagonalModelUnits,
+                         std::optional<bool> oneClosedPart) {
+  const size_t faceCount = faces.FaceCount();
+  if (faceCount < 4) return false;
+  if (!(oneClosedPart ? *oneClosedPart : OneClosedPart(faces, adjacency))) return false;
   const double tolerance = 1e-9 * std::max(1.0, diagonalModelUnits);
   auto behindPlane = [&](uint32_t f, uint32_t g) {
     const FacePlane plane = PlaneOfFace(verticesWorld, faces.Face(f));
@@ -132,22 +156,22 @@ bool ConvexClosedSurface(const std::vector<Vec3>& verticesWorld, const FaceList&
     }
     return true;
   };
-  bool closed = true, convex = true;
-  adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
-    if (!closed) return;
-    if (uses.size() != 2 || uses[0].Forward() == uses[1].Forward()) {
-      closed = false;  // open, non-manifold or inconsistently wound
-      return;
-    }
-    const uint32_t f = uses[0].Face(), g = uses[1].Face();
-    component[root(f)] = root(g);
-    convex = convex && behindPlane(f, g) && behindPlane(g, f);
+  // Step 2: convex at every edge, the edges split by smaller vertex.
+  std::atomic<bool> convex{true};
+  const uint64_t vertices = adjacency.VertexCount();
+  const int threads = LoadThreadCount(adjacency.UseCount());
+  RunOnLoadThreads(threads, [&](int part) {
+    const auto begin = static_cast<uint32_t>(vertices * static_cast<uint64_t>(part) /
+                                             static_cast<uint64_t>(threads));
+    const auto end = static_cast<uint32_t>(vertices * static_cast<uint64_t>(part + 1) /
+                                           static_cast<uint64_t>(threads));
+    adjacency.ForEachEdgeFrom(begin, end, [&](uint32_t, std::span<const EdgeUse> uses) {
+      if (!convex.load(std::memory_order_relaxed)) return;
+      const uint32_t f = uses[0].Face(), g = uses[1].Face();
+      if (!behindPlane(f, g) || !behindPlane(g, f)) convex.store(false, std::memory_order_relaxed);
+    });
   });
-  if (!closed || !convex) return false;
-  for (uint32_t f = 0; f < faceCount; ++f) {
-    if (root(f) != root(0)) return false;
-  }
-  return true;
+  return convex.load();
 }
 
 }  // namespace
@@ -208,8 +232,12 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
 
   // Step 2: inside-out closed parts turned outward, once.
   auto adjacency = std::make_unique<EdgeAdjacency>(vertexCount, faces);
-  scene.facesTurnedOutward = OrientClosedPartsOutward(faces, *adjacency, scene.verticesWorld);
+  bool oneClosedPart = false;
+  scene.facesTurnedOutward =
+      OrientClosedPartsOutward(faces, *adjacency, scene.verticesWorld, &oneClosedPart);
+  std::optional<bool> knownClosed = oneClosedPart;
   if (scene.facesTurnedOutward > 0) {
+    knownClosed.reset();  // reversed faces: edges to look at again
     adjacency.reset();
     adjacency = std::make_unique<EdgeAdjacency>(vertexCount, faces);
   }
@@ -217,7 +245,8 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // Step 3: whether the model is a convex closed connected surface; the edge
   // uses are freed before the triangles and planes take their place.
   const bool convex =
-      ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits);
+      ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits,
+                          knownClosed);
   adjacency->ReleasePages();
   adjacency.reset();
 
@@ -233,6 +262,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch);
   }
   if (FacesAreTheTriangles(scene, faces)) {
+    FreeAndReleasePages(faces.corners);  // a hole the planes do not fit in
     faces.Clear();
   } else {
     scene.source.faces = std::move(faces);
