@@ -94,6 +94,35 @@ void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
   }
 }
 
+// Step 4's common case, on the load threads: every face a triangle of three
+// distinct finite corners, which TriangulatePolygon gives as its one
+// triangle {2, 0, 1}. False (the triangles left half-written) as soon as a
+// face is not, for the general path.
+bool TriangulateTrianglesOnLoadThreads(Scene& scene, const FaceList& faces) {
+  const size_t faceCount = faces.FaceCount();
+  if (!faces.starts.empty() || faceCount == 0) return false;
+  ResizeFaultedIn(scene.triangles, faceCount);
+  std::atomic<bool> simple{true};
+  const int threads = LoadThreadCount(faceCount);
+  RunOnLoadThreads(threads, [&](int part) {
+    const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
+    const size_t end = faceCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
+    const Vec3* points = scene.verticesWorld.data();
+    for (size_t face = begin; face < end && simple.load(std::memory_order_relaxed); ++face) {
+      const uint32_t* c = faces.corners.data() + 3 * face;
+      const std::array<Vec3, 3> corners{points[c[0]], points[c[1]], points[c[2]]};
+      if (!IsFinite(corners[0]) || !IsFinite(corners[1]) || !IsFinite(corners[2]) ||
+          corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0] ||
+          !IsFinite(NewellNormal(std::span<const Vec3>(corners)))) {
+        simple.store(false, std::memory_order_relaxed);
+        return;
+      }
+      scene.triangles[face] = {{c[2], c[0], c[1]}};
+    }
+  });
+  return simple.load();
+}
+
 // Face f of faces is scene triangle f, as Scene::Face gives it back, and no
 // edge is hidden: the scene need not keep the faces.
 bool FacesAreTheTriangles(const Scene& scene, const FaceList& faces) {
@@ -209,10 +238,9 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
 
   // Step 1: world space is file space turned up (+z), centered on the bounding
   // box; of the file's vertices, only those world space does not give back are kept.
-  scene.verticesWorld.reserve(mesh.verticesFile.size());
-  AdviseHugePages(scene.verticesWorld);
-  for (const Vec3& p : mesh.verticesFile) {
-    scene.verticesWorld.push_back(ZUpFromFile(scene.upAxis, p));
+  ResizeFaultedIn(scene.verticesWorld, mesh.verticesFile.size());
+  for (size_t v = 0; v < mesh.verticesFile.size(); ++v) {
+    scene.verticesWorld[v] = ZUpFromFile(scene.upAxis, mesh.verticesFile[v]);
   }
   const Bounds bounds = FiniteBounds(scene.verticesWorld);
   const Vec3 center = bounds.Empty() ? Vec3{} : (bounds.low + bounds.high) * 0.5;
@@ -254,14 +282,19 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // faces are dropped when the triangles give them back.
   const size_t faceCount = faces.FaceCount();
   const size_t cornerCount = faces.corners.size();
-  scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
-  AdviseHugePages(scene.triangles);
-  std::vector<Vec3> cornersScratch;
-  std::vector<CornerTriangle> trianglesScratch;
-  for (size_t face = 0; face < faceCount; ++face) {
-    AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch);
+  const bool simpleTriangles = TriangulateTrianglesOnLoadThreads(scene, faces);
+  if (!simpleTriangles) {
+    scene.triangles.clear();
+    scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
+    AdviseHugePages(scene.triangles);
+    std::vector<Vec3> cornersScratch;
+    std::vector<CornerTriangle> trianglesScratch;
+    for (size_t face = 0; face < faceCount; ++face) {
+      AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch);
+    }
   }
-  if (FacesAreTheTriangles(scene, faces)) {
+  // (The fast path's triangles are the faces by construction.)
+  if ((simpleTriangles && faces.hidden.empty()) || FacesAreTheTriangles(scene, faces)) {
     FreeAndReleasePages(faces.corners);  // a hole the planes do not fit in
     faces.Clear();
   } else {
@@ -269,9 +302,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   }
 
   // Step 5: per-face planes, the faces split in ranges over the load threads.
-  scene.facePlanesWorld.reserve(faceCount);
-  AdviseHugePages(scene.facePlanesWorld);
-  scene.facePlanesWorld.resize(faceCount);
+  ResizeFaultedIn(scene.facePlanesWorld, faceCount);
   const int threads = LoadThreadCount(faceCount);
   RunOnLoadThreads(threads, [&scene, faceCount, threads](int part) {
     const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);

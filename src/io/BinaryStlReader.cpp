@@ -98,8 +98,11 @@ struct WeldPart {
     }
   }
 
+  // Frees the keys and the table, their pages handed back (HugePages.h).
   void Clear() {
+    if (table) table->ReleasePages();
     table.reset();
+    ReleasePages(keys.get(), size_t{distinct} * kKeyBytes);
     keys.reset();
   }
 };
@@ -136,9 +139,7 @@ Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& pat
   const size_t cornerCount = triangles * 3;
   Mesh mesh;
   mesh.name = path;
-  mesh.faceCorners.reserve(cornerCount);
-  AdviseHugePages(mesh.faceCorners);
-  mesh.faceCorners.resize(cornerCount);
+  ResizeFaultedIn(mesh.faceCorners, cornerCount);
   partCount = std::clamp<size_t>(partCount, 1, triangles);
   std::vector<WeldPart> parts(partCount);
   for (size_t p = 0; p < partCount; ++p) {
@@ -173,13 +174,14 @@ Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& pat
     parts[p].Clear();
   }
   if (owned != nullptr) owned->Free();
-  mesh.verticesFile.reserve(first.distinct);
-  AdviseHugePages(mesh.verticesFile);
+  FreeAndReleasePages(globalOf);
+  ResizeFaultedIn(mesh.verticesFile, first.distinct);
   for (uint32_t v = 0; v < first.distinct; ++v) {
     float xyz[3];
     std::memcpy(xyz, first.KeyAt(v), sizeof xyz);
-    mesh.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
+    mesh.verticesFile[v] = {xyz[0], xyz[1], xyz[2]};
   }
+  first.Clear();
 
   // Step 3: one face per triangle in file order.
   mesh.faceStarts.reserve(triangles + 1);

@@ -80,8 +80,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       stl.append(text.substr(t * 36, 36));
       stl.append(2, '\0');
     }
-    const Loaded<Mesh> whole = ReadBinaryStlInParts(stl, "fuzz.stl", 1);
-    const Loaded<Mesh> split = ReadBinaryStlInParts(stl, "fuzz.stl", parts);
+    Loaded<Mesh> whole = ReadBinaryStlInParts(stl, "fuzz.stl", 1);
+    Loaded<Mesh> split = ReadBinaryStlInParts(stl, "fuzz.stl", parts);
     if (!whole.Ok() || !split.Ok()) std::abort();
     const Mesh &a = whole.Value(), &b = split.Value();
     if (a.faceCorners != b.faceCorners || a.verticesFile.size() != b.verticesFile.size() ||
