@@ -30,27 +30,6 @@ namespace fs = std::filesystem;
 
 const auto kAnySize = [](size_t) -> std::optional<std::string> { return std::nullopt; };
 
-// A folder of this test's own, removed with its files at the end.
-class TempFolder {
- public:
-  TempFolder()
-      : path_(fs::temp_directory_path() / ("termshade-file-bytes-" + std::to_string(getpid()))) {
-    fs::create_directories(path_);
-  }
-  ~TempFolder() {
-    std::error_code error;
-    fs::remove_all(path_, error);
-  }
-  std::string Write(const std::string& name, const std::string& bytes) const {
-    const std::string file = (path_ / name).string();
-    std::ofstream(file, std::ios::binary) << bytes;
-    return file;
-  }
-
- private:
-  fs::path path_;
-};
-
 bool SameMesh(const Mesh& a, const Mesh& b) {
   return a.faceCorners == b.faceCorners && a.faceStarts == b.faceStarts &&
          a.upAxisFile == b.upAxisFile && a.verticesFile.size() == b.verticesFile.size() &&
@@ -59,7 +38,7 @@ bool SameMesh(const Mesh& a, const Mesh& b) {
 }
 
 TEST(FileBytes, MappedBytesAreTheFile) {
-  const TempFolder folder;
+  const test::ScratchFolder folder("termshade-file-bytes");
   const std::string bytes = ExportMesh(GenerateTriangleSphere(2000), ExportFormat::kStl);
   const std::string path = folder.Write("sphere.stl", bytes);
   Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
@@ -75,7 +54,7 @@ TEST(FileBytes, MappedBytesAreTheFile) {
 }
 
 TEST(FileBytes, EmptyFilesAndFoldersAreReadNotMapped) {
-  const TempFolder folder;
+  const test::ScratchFolder folder("termshade-file-bytes");
   Loaded<FileBytes> empty = FileBytes::MapRegularFile(folder.Write("empty.stl", ""), kAnySize);
   ASSERT_TRUE(empty.Ok());
   EXPECT_EQ(empty.Value().Size(), 0U);
@@ -87,7 +66,7 @@ TEST(FileBytes, EmptyFilesAndFoldersAreReadNotMapped) {
 // Every format our readers take, from a mapping, equals the read() path and
 // the importer's mesh.
 TEST(FileBytes, MappedLoadGivesTheSameMeshAsReadAndAsAssimp) {
-  const TempFolder folder;
+  const test::ScratchFolder folder("termshade-file-bytes");
   const Mesh sphere = GenerateTriangleSphere(20'000);
   for (const auto& [format, exportFormat] :
        {std::pair{"obj", ExportFormat::kObj}, std::pair{"stl", ExportFormat::kStl},
@@ -114,7 +93,7 @@ TEST(FileBytes, MappedLoadGivesTheSameMeshAsReadAndAsAssimp) {
 // The file cut to half its size after it was mapped: the reader sees zeros
 // past the new end instead of SIGBUS, and the load is refused.
 TEST(FileBytes, FileShrunkUnderTheMappingIsACleanError) {
-  const TempFolder folder;
+  const test::ScratchFolder folder("termshade-file-bytes");
   const std::string bytes = ExportMesh(GenerateTriangleSphere(20'000), ExportFormat::kStl);
   for (const char* name : {"cut.stl", "cut_loader.stl"}) {
     const std::string path = folder.Write(name, bytes);
@@ -140,7 +119,7 @@ TEST(FileBytes, FileShrunkUnderTheMappingIsACleanError) {
 // A SIGBUS outside every watched mapping still ends the process (by the
 // signal, or by the handler that was there before, such as a sanitizer's).
 TEST(FileBytesDeathTest, ForeignBusErrorsStillEndTheProcess) {
-  const TempFolder folder;
+  const test::ScratchFolder folder("termshade-file-bytes");
   const std::string path = folder.Write("foreign.bin", std::string(1 << 16, 'x'));
   EXPECT_DEATH(
       {
