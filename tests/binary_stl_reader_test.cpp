@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstring>
+#include <vector>
 
 #include "io/MeshExport.h"
 #include "io/SceneGenerators.h"
@@ -46,17 +47,44 @@ TEST(BinaryStlReader, NumbersVerticesInFirstOccurrenceOrder) {
   }
 }
 
+// Welded in any number of runs (threads), the same mesh as in one, bit for
+// bit, and the same as meshoptimizer's first-occurrence remap; a run may
+// hold a single triangle, or positions only other runs have.
+TEST(BinaryStlReader, AnyPartCountGivesTheSameMesh) {
+  const Mesh sphere = GenerateTriangleSphere(3000);
+  const std::string bytes = ExportMesh(sphere, ExportFormat::kStl);
+  Loaded<Mesh> one = ReadBinaryStlInParts(bytes, "sphere.stl", 1);
+  ASSERT_TRUE(one.Ok());
+  // meshopt_generateVertexRemap's numbering: each position numbered at its first corner.
+  std::vector<Vec3> firstSeen;
+  for (const uint32_t corner : one.Value().faceCorners) {
+    if (corner == firstSeen.size()) firstSeen.push_back(one.Value().verticesFile[corner]);
+    ASSERT_LT(corner, firstSeen.size());
+  }
+  EXPECT_EQ(firstSeen.size(), one.Value().verticesFile.size());
+  for (const size_t parts : {2UL, 3UL, 7UL, 5000UL}) {
+    Loaded<Mesh> split = ReadBinaryStlInParts(bytes, "sphere.stl", parts);
+    ASSERT_TRUE(split.Ok());
+    EXPECT_EQ(split.Value().faceCorners, one.Value().faceCorners) << parts;
+    ASSERT_EQ(split.Value().verticesFile.size(), one.Value().verticesFile.size()) << parts;
+    EXPECT_EQ(std::memcmp(split.Value().verticesFile.data(), one.Value().verticesFile.data(),
+                          one.Value().verticesFile.size() * sizeof(Vec3)),
+              0)
+        << parts;
+  }
+}
+
 // Given the file's own string, the reader hands its pages back as it reads
 // (files past 4 MiB) and frees it: the same mesh as from a view, bit for bit.
 TEST(BinaryStlReader, OwnedFileGivesTheSameMeshAndIsFreed) {
   const Mesh sphere = GenerateTriangleSphere(300000);
-  std::string owned = ExportMesh(sphere, ExportFormat::kStl);
-  ASSERT_GT(owned.size(), size_t{8} << 20);
-  const std::string copy = owned;
+  const std::string copy = ExportMesh(sphere, ExportFormat::kStl);
+  ASSERT_GT(copy.size(), size_t{8} << 20);
+  FileBytes owned(copy);
   Loaded<Mesh> fromView = ReadBinaryStl(copy, "sphere.stl");
-  Loaded<Mesh> fromOwned = ReadBinaryStl(owned, "sphere.stl", &owned);
+  Loaded<Mesh> fromOwned = ReadBinaryStl(owned.View(), "sphere.stl", &owned);
   ASSERT_TRUE(fromView.Ok() && fromOwned.Ok());
-  EXPECT_TRUE(owned.empty());
+  EXPECT_EQ(owned.Size(), 0U);
   const Mesh &a = fromView.Value(), &b = fromOwned.Value();
   EXPECT_EQ(a.faceCorners, b.faceCorners);
   EXPECT_EQ(a.faceStarts, b.faceStarts);

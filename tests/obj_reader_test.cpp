@@ -124,10 +124,11 @@ TEST(ObjReader, OwnedTextGivesTheSameResultAndIsFreedWhenRead) {
   for (const std::string* text : {&sphere, &bad}) {
     const std::string one = test::ReadResultText(ReadObjInChunks(*text, "m.obj", kBudget, 1));
     for (const size_t chunks : {1UL, 2UL, 7UL}) {
-      std::string owned = *text;
-      EXPECT_EQ(test::ReadResultText(ReadObjInChunks(owned, "m.obj", kBudget, chunks, &owned)),
-                one);
-      EXPECT_EQ(owned.empty(), text == &sphere) << chunks << " chunks";
+      FileBytes owned(*text);
+      EXPECT_EQ(
+          test::ReadResultText(ReadObjInChunks(owned.View(), "m.obj", kBudget, chunks, &owned)),
+          one);
+      EXPECT_EQ(owned.Size() == 0, text == &sphere) << chunks << " chunks";
     }
   }
 }

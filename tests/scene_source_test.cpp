@@ -8,6 +8,7 @@
 
 #include "geometry/FaceNormal.h"
 #include "geometry/Scene.h"
+#include "geometry/Triangulate.h"
 #include "io/SceneGenerators.h"
 
 namespace termshade {
@@ -85,6 +86,41 @@ TEST(SceneFaceMaps, ExplicitForPolygonsAndFacesWithoutTriangles) {
   EXPECT_EQ(mixed.FaceTrianglesBegin(mixed.FaceCount() - 1), mixed.triangles.size());
   EXPECT_EQ(mixed.faceTriangleStarts.size(), mixed.FaceCount() + 1);
   ExpectFaceMapsAgree(mixed);
+}
+
+// Faces that are all triangles are triangulated on the load threads: each
+// face's triangle is TriangulatePolygon's, and a face it would not give one
+// (two corners at one point, last of all) sends the whole mesh down the
+// general path with the same result.
+TEST(SceneTriangles, ThreadedTrianglesEqualTriangulatePolygon) {
+  Mesh sphere = GenerateTriangleSphere(300000);
+  for (const bool degenerateLast : {false, true}) {
+    Mesh mesh = sphere;
+    if (degenerateLast) {
+      const auto v = static_cast<uint32_t>(mesh.verticesFile.size());
+      mesh.verticesFile.insert(mesh.verticesFile.end(), {{5, 0, 0}, {5, 0, 0}, {6, 1, 0}});
+      mesh.AddFace(std::vector<uint32_t>{v, v + 1, v + 2});
+    }
+    const Scene scene = PrepareScene(mesh, UpAxis::kPlusY);
+    std::vector<SceneTriangle> expected;
+    std::vector<CornerTriangle> triangles;
+    for (size_t f = 0; f < scene.FaceCount(); ++f) {
+      const auto corners = scene.Face(f);
+      std::vector<Vec3> points;
+      for (const uint32_t c : corners) points.push_back(scene.verticesWorld[c]);
+      triangles.clear();
+      TriangulatePolygon(points, triangles);
+      for (const CornerTriangle& t : triangles) {
+        expected.push_back({{corners[t[0]], corners[t[1]], corners[t[2]]}});
+      }
+    }
+    ASSERT_EQ(scene.triangles.size(), expected.size()) << degenerateLast;
+    for (size_t t = 0; t < expected.size(); ++t) {
+      ASSERT_EQ(scene.triangles[t].vertices, expected[t].vertices) << t;
+    }
+    EXPECT_EQ(scene.faceTriangleStarts.empty(), !degenerateLast);
+    ExpectFaceMapsAgree(scene);
+  }
 }
 
 // The planes, computed over the load threads in ranges of faces, are each

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/HugePages.h"
+#include "geometry/LoadThreads.h"
 
 namespace termshade {
 
@@ -56,7 +57,19 @@ class EdgeAdjacency {
   /// order; the uses are sorted by face.
   template <typename Visit>
   void ForEachEdge(Visit&& visit) const {
-    for (uint32_t low = 0; low + 1 < starts_.size(); ++low) {
+    ForEachEdgeFrom(0, VertexCount(), visit);
+  }
+
+  /// The vertices the edges are numbered over.
+  uint32_t VertexCount() const {
+    return starts_.empty() ? 0 : static_cast<uint32_t>(starts_.size() - 1);
+  }
+
+  /// ForEachEdge for the edges whose smaller vertex is in [lowBegin, lowEnd):
+  /// disjoint ranges split the edges (for threads).
+  template <typename Visit>
+  void ForEachEdgeFrom(uint32_t lowBegin, uint32_t lowEnd, Visit&& visit) const {
+    for (uint32_t low = lowBegin; low < lowEnd; ++low) {
       const EdgeUse* use = uses_.data() + starts_[low];
       const EdgeUse* const end = uses_.data() + starts_[low + 1];
       while (use != end) {
@@ -94,9 +107,7 @@ EdgeAdjacency::EdgeAdjacency(size_t vertexCount, const Faces& faces) {
   for (size_t v = 0; v < vertexCount; ++v) starts_[v + 1] += starts_[v];
 
   // Step 2: place each use in its vertex's range.
-  uses_.reserve(starts_.back());
-  AdviseHugePages(uses_);
-  uses_.resize(starts_.back());
+  ResizeFaultedIn(uses_, starts_.back());
   {
     std::vector<uint32_t> filled(starts_.begin(), starts_.end() - 1);
     forEachFaceEdge([&](uint32_t a, uint32_t b, uint32_t face, size_t i) {
@@ -104,11 +115,17 @@ EdgeAdjacency::EdgeAdjacency(size_t vertexCount, const Faces& faces) {
     });
   }
 
-  // Step 3: within a vertex, by larger vertex, then face.
-  for (size_t v = 0; v < vertexCount; ++v) {
-    std::sort(uses_.begin() + starts_[v], uses_.begin() + starts_[v + 1],
-              [](const EdgeUse& p, const EdgeUse& q) { return p.SortKey() < q.SortKey(); });
-  }
+  // Step 3: within a vertex, by larger vertex, then face; the vertices
+  // split over the load threads.
+  const int threads = LoadThreadCount(uses_.size());
+  RunOnLoadThreads(threads, [this, vertexCount, threads](int part) {
+    const size_t begin = vertexCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
+    const size_t end = vertexCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
+    for (size_t v = begin; v < end; ++v) {
+      std::sort(uses_.begin() + starts_[v], uses_.begin() + starts_[v + 1],
+                [](const EdgeUse& p, const EdgeUse& q) { return p.SortKey() < q.SortKey(); });
+    }
+  });
 }
 
 }  // namespace termshade

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "geometry/HugePages.h"
+
 namespace termshade {
 
 FaceList TakeFaces(Mesh& mesh) {
@@ -17,11 +19,11 @@ FaceList TakeFaces(Mesh& mesh) {
   faces.corners = std::move(mesh.faceCorners);
   if (!allTriangles) faces.starts = std::move(mesh.faceStarts);
   if (anyHidden) faces.hidden = std::move(mesh.edgeHidden);
+  // What was not taken is freed with its pages (HugePages.h).
   mesh.faceCorners.clear();
+  FreeAndReleasePages(mesh.faceStarts);
+  FreeAndReleasePages(mesh.edgeHidden);
   mesh.faceStarts.assign(1, 0);
-  mesh.edgeHidden.clear();
-  mesh.faceStarts.shrink_to_fit();
-  mesh.edgeHidden.shrink_to_fit();
   return faces;
 }
 

@@ -69,6 +69,12 @@ class FirstOccurrenceTable {
   /// The key the hash's first slot holds, or kEmpty.
   uint32_t HeldAt(uint64_t hash) const { return table_[hash & mask_]; }
 
+  /// Frees the table, its pages handed back (HugePages.h); unusable after.
+  void ReleasePages() {
+    termshade::ReleasePages(table_.get(), (mask_ + 1) * sizeof(uint32_t));
+    table_.reset();
+  }
+
   /// The first index whose key equals key i's (hash given); i itself when new.
   uint32_t FindOrInsert(uint32_t i, uint64_t hash) {
     const char* key = keyAt_(i);

@@ -1,6 +1,9 @@
 #include "geometry/HeapPolicy.h"
 
 #include <climits>  // first: it defines __GLIBC__
+#include <cstdlib>
+
+#include "geometry/HugePages.h"
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -13,6 +16,15 @@ void KeepFreedMemoryForReuse() {
   mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, INT_MAX);
 #endif
+}
+
+void AdviseHugePagesForLoad(size_t bytes) {
+  // Freed, the block joins the heap's free top (kept: KeepFreedMemoryForReuse)
+  // with its advice; untouched, it costs no memory.
+  void* block = std::malloc(bytes);
+  if (block == nullptr) return;
+  AdviseHugePages(block, bytes);
+  std::free(block);
 }
 
 void ReturnFreedMemory() {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+
 namespace termshade {
 
 /// Makes big arrays come from the heap and stay there once freed, instead of
@@ -7,6 +9,13 @@ namespace termshade {
 /// allocates hundreds of MB in turn, and on this kind of VM the kernel's page
 /// zeroing was a third of the load (README, "Big models"). Call once at start.
 void KeepFreedMemoryForReuse();
+
+/// Before a big load: makes the heap hold at least `bytes` (address space
+/// only, nothing is touched) and asks for huge pages on all of it, so every
+/// array the load allocates there, small ones included, faults in 2 MiB at a
+/// time (one fault instead of 512; HugePages.h). Arrays outside it (a
+/// thread's arena, a heap already bigger) are unaffected.
+void AdviseHugePagesForLoad(size_t bytes);
 
 /// Hands the free heap pages back to the kernel (after a long-lived process
 /// drops a big model, e.g. the viewer opening a smaller one).

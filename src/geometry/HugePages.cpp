@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+
 namespace termshade {
 
 void AdviseHugePages(void* data, size_t bytes) {

@@ -1,6 +1,10 @@
 #include "geometry/LoadThreads.h"
 
+#include <sys/mman.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdint>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -34,6 +38,34 @@ void RunOnLoadThreads(int threads, const std::function<void(int)>& work) {
   for (int t = static_cast<int>(started.size()) + 1; t < threads; ++t) work(t);
   work(0);
   for (std::thread& thread : started) thread.join();
+}
+
+void PopulateOnLoadThreads(void* data, size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  constexpr uintptr_t kHugePage = uintptr_t{1} << 21;
+  if (data == nullptr || bytes < 2 * kHugePage) return;
+  const auto pageBytes = static_cast<uintptr_t>(sysconf(_SC_PAGESIZE));
+  const auto begin = reinterpret_cast<uintptr_t>(data);
+  const uintptr_t first = (begin + pageBytes - 1) & ~(pageBytes - 1);
+  const uintptr_t last = (begin + bytes) & ~(pageBytes - 1);
+  if (last <= first) return;
+  // Two threads from 8 MiB, a run of whole huge pages each (as far as they go).
+  const int threads = LoadThreadCount((last - first) / 64);
+  const auto boundary = [=](int part) {
+    if (part <= 0) return first;
+    if (part >= threads) return last;
+    const uintptr_t at = first + (last - first) / static_cast<uintptr_t>(threads) *
+                                     static_cast<uintptr_t>(part);
+    return std::clamp(at & ~(kHugePage - 1), first, last);
+  };
+  RunOnLoadThreads(threads, [&boundary](int part) {
+    const uintptr_t from = boundary(part), to = boundary(part + 1);
+    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+  });
+#else
+  (void)data;
+  (void)bytes;
+#endif
 }
 
 }  // namespace termshade

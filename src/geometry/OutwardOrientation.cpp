@@ -62,7 +62,7 @@ void ReverseFace(FaceList& faces, size_t face) {
 }
 
 size_t OrientClosedPartsOutward(FaceList& faces, const EdgeAdjacency& edges,
-                                std::span<const Vec3> points) {
+                                std::span<const Vec3> points, bool* oneClosedPart) {
   const size_t faceCount = faces.FaceCount();
   // Step 1: parts through shared edges; a face on an edge that is not used
   // exactly once each way marks its part open.
@@ -83,6 +83,13 @@ size_t OrientClosedPartsOutward(FaceList& faces, const EdgeAdjacency& edges,
     const uint32_t root = parts.Root(f);
     sixVolume[root] += SixVolumeUnderFace(faces, f, points);
     openPart[root] = openPart[root] | openFace[f];
+  }
+
+  if (oneClosedPart != nullptr) {
+    *oneClosedPart = faceCount > 0;
+    for (uint32_t f = 0; f < faceCount && *oneClosedPart; ++f) {
+      *oneClosedPart = openFace[f] == 0 && parts.Root(f) == parts.Root(0);
+    }
   }
 
   // Step 3: reverse the faces of closed parts with negative volume (NaN from

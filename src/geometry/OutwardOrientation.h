@@ -16,8 +16,10 @@ namespace termshade {
 /// Open or non-manifold parts keep their winding. points: one per mesh
 /// vertex, in any space that is a proper rotation plus shift of file space
 /// (best centered, for the volume's rounding). Returns the faces reversed.
+/// oneClosedPart, when given, is set to whether all faces form one part
+/// with every edge closed, as given (before any reversal).
 size_t OrientClosedPartsOutward(FaceList& faces, const EdgeAdjacency& edges,
-                                std::span<const Vec3> points);
+                                std::span<const Vec3> points, bool* oneClosedPart = nullptr);
 
 /// Reverses a face's corners in place, keeping its first corner and each
 /// edge's hidden flag.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -93,6 +94,35 @@ void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
   }
 }
 
+// Step 4's common case, on the load threads: every face a triangle of three
+// distinct finite corners, which TriangulatePolygon gives as its one
+// triangle {2, 0, 1}. False (the triangles left half-written) as soon as a
+// face is not, for the general path.
+bool TriangulateTrianglesOnLoadThreads(Scene& scene, const FaceList& faces) {
+  const size_t faceCount = faces.FaceCount();
+  if (!faces.starts.empty() || faceCount == 0) return false;
+  ResizeFaultedIn(scene.triangles, faceCount);
+  std::atomic<bool> simple{true};
+  const int threads = LoadThreadCount(faceCount);
+  RunOnLoadThreads(threads, [&](int part) {
+    const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
+    const size_t end = faceCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
+    const Vec3* points = scene.verticesWorld.data();
+    for (size_t face = begin; face < end && simple.load(std::memory_order_relaxed); ++face) {
+      const uint32_t* c = faces.corners.data() + 3 * face;
+      const std::array<Vec3, 3> corners{points[c[0]], points[c[1]], points[c[2]]};
+      if (!IsFinite(corners[0]) || !IsFinite(corners[1]) || !IsFinite(corners[2]) ||
+          corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0] ||
+          !IsFinite(NewellNormal(std::span<const Vec3>(corners)))) {
+        simple.store(false, std::memory_order_relaxed);
+        return;
+      }
+      scene.triangles[face] = {{c[2], c[0], c[1]}};
+    }
+  });
+  return simple.load();
+}
+
 // Face f of faces is scene triangle f, as Scene::Face gives it back, and no
 // edge is hidden: the scene need not keep the faces.
 bool FacesAreTheTriangles(const Scene& scene, const FaceList& faces) {
@@ -108,21 +138,44 @@ bool FacesAreTheTriangles(const Scene& scene, const FaceList& faces) {
   return true;
 }
 
-// Whether the faces form a closed (every edge used once each way) connected
-// surface, convex at every edge (each face's corners on or behind its
-// neighbour's plane): a convex solid, where facing decides visibility. The
-// planes are those Step 4 stores, computed here per edge so no face pairs
-// need be kept.
-bool ConvexClosedSurface(const std::vector<Vec3>& verticesWorld, const FaceList& faces,
-                         const EdgeAdjacency& adjacency, double diagonalModelUnits) {
+// Step 1 of ConvexClosedSurface: every edge used once each way, and the
+// faces connected through them.
+bool OneClosedPart(const FaceList& faces, const EdgeAdjacency& adjacency) {
   const size_t faceCount = faces.FaceCount();
-  if (faceCount < 4) return false;
   std::vector<uint32_t> component(faceCount);
   for (uint32_t f = 0; f < faceCount; ++f) component[f] = f;
   auto root = [&](uint32_t f) {
     while (component[f] != f) f = component[f] = component[component[f]];
     return f;
   };
+  bool closed = true;
+  adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
+    if (!closed) return;
+    if (uses.size() != 2 || uses[0].Forward() == uses[1].Forward()) {
+      closed = false;  // open, non-manifold or inconsistently wound
+      return;
+    }
+    component[root(uses[0].Face())] = root(uses[1].Face());
+  });
+  if (!closed) return false;
+  for (uint32_t f = 0; f < faceCount; ++f) {
+    if (root(f) != root(0)) return false;
+  }
+  return true;
+}
+
+// Whether the faces form a closed (every edge used once each way) connected
+// surface, convex at every edge (each face's corners on or behind its
+// neighbour's plane): a convex solid, where facing decides visibility. The
+// planes are those Step 4 stores, computed here per edge so no face pairs
+// need be kept, the edges split over the load threads.
+// oneClosedPart: the answer to step 1 when already known.
+bool ConvexClosedSurface(const std::vector<Vec3>& verticesWorld, const FaceList& faces,
+                         const EdgeAdjacency& adjacency, double diagonalModelUnits,
+                         std::optional<bool> oneClosedPart) {
+  const size_t faceCount = faces.FaceCount();
+  if (faceCount < 4) return false;
+  if (!(oneClosedPart ? *oneClosedPart : OneClosedPart(faces, adjacency))) return false;
   const double tolerance = 1e-9 * std::max(1.0, diagonalModelUnits);
   auto behindPlane = [&](uint32_t f, uint32_t g) {
     const FacePlane plane = PlaneOfFace(verticesWorld, faces.Face(f));
@@ -132,22 +185,22 @@ bool ConvexClosedSurface(const std::vector<Vec3>& verticesWorld, const FaceList&
     }
     return true;
   };
-  bool closed = true, convex = true;
-  adjacency.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
-    if (!closed) return;
-    if (uses.size() != 2 || uses[0].Forward() == uses[1].Forward()) {
-      closed = false;  // open, non-manifold or inconsistently wound
-      return;
-    }
-    const uint32_t f = uses[0].Face(), g = uses[1].Face();
-    component[root(f)] = root(g);
-    convex = convex && behindPlane(f, g) && behindPlane(g, f);
+  // Step 2: convex at every edge, the edges split by smaller vertex.
+  std::atomic<bool> convex{true};
+  const uint64_t vertices = adjacency.VertexCount();
+  const int threads = LoadThreadCount(adjacency.UseCount());
+  RunOnLoadThreads(threads, [&](int part) {
+    const auto begin = static_cast<uint32_t>(vertices * static_cast<uint64_t>(part) /
+                                             static_cast<uint64_t>(threads));
+    const auto end = static_cast<uint32_t>(vertices * static_cast<uint64_t>(part + 1) /
+                                           static_cast<uint64_t>(threads));
+    adjacency.ForEachEdgeFrom(begin, end, [&](uint32_t, std::span<const EdgeUse> uses) {
+      if (!convex.load(std::memory_order_relaxed)) return;
+      const uint32_t f = uses[0].Face(), g = uses[1].Face();
+      if (!behindPlane(f, g) || !behindPlane(g, f)) convex.store(false, std::memory_order_relaxed);
+    });
   });
-  if (!closed || !convex) return false;
-  for (uint32_t f = 0; f < faceCount; ++f) {
-    if (root(f) != root(0)) return false;
-  }
-  return true;
+  return convex.load();
 }
 
 }  // namespace
@@ -185,10 +238,9 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
 
   // Step 1: world space is file space turned up (+z), centered on the bounding
   // box; of the file's vertices, only those world space does not give back are kept.
-  scene.verticesWorld.reserve(mesh.verticesFile.size());
-  AdviseHugePages(scene.verticesWorld);
-  for (const Vec3& p : mesh.verticesFile) {
-    scene.verticesWorld.push_back(ZUpFromFile(scene.upAxis, p));
+  ResizeFaultedIn(scene.verticesWorld, mesh.verticesFile.size());
+  for (size_t v = 0; v < mesh.verticesFile.size(); ++v) {
+    scene.verticesWorld[v] = ZUpFromFile(scene.upAxis, mesh.verticesFile[v]);
   }
   const Bounds bounds = FiniteBounds(scene.verticesWorld);
   const Vec3 center = bounds.Empty() ? Vec3{} : (bounds.low + bounds.high) * 0.5;
@@ -208,8 +260,12 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
 
   // Step 2: inside-out closed parts turned outward, once.
   auto adjacency = std::make_unique<EdgeAdjacency>(vertexCount, faces);
-  scene.facesTurnedOutward = OrientClosedPartsOutward(faces, *adjacency, scene.verticesWorld);
+  bool oneClosedPart = false;
+  scene.facesTurnedOutward =
+      OrientClosedPartsOutward(faces, *adjacency, scene.verticesWorld, &oneClosedPart);
+  std::optional<bool> knownClosed = oneClosedPart;
   if (scene.facesTurnedOutward > 0) {
+    knownClosed.reset();  // reversed faces: edges to look at again
     adjacency.reset();
     adjacency = std::make_unique<EdgeAdjacency>(vertexCount, faces);
   }
@@ -217,7 +273,8 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // Step 3: whether the model is a convex closed connected surface; the edge
   // uses are freed before the triangles and planes take their place.
   const bool convex =
-      ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits);
+      ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits,
+                          knownClosed);
   adjacency->ReleasePages();
   adjacency.reset();
 
@@ -225,23 +282,27 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // faces are dropped when the triangles give them back.
   const size_t faceCount = faces.FaceCount();
   const size_t cornerCount = faces.corners.size();
-  scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
-  AdviseHugePages(scene.triangles);
-  std::vector<Vec3> cornersScratch;
-  std::vector<CornerTriangle> trianglesScratch;
-  for (size_t face = 0; face < faceCount; ++face) {
-    AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch);
+  const bool simpleTriangles = TriangulateTrianglesOnLoadThreads(scene, faces);
+  if (!simpleTriangles) {
+    scene.triangles.clear();
+    scene.triangles.reserve(cornerCount - std::min(cornerCount, 2 * faceCount));
+    AdviseHugePages(scene.triangles);
+    std::vector<Vec3> cornersScratch;
+    std::vector<CornerTriangle> trianglesScratch;
+    for (size_t face = 0; face < faceCount; ++face) {
+      AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch);
+    }
   }
-  if (FacesAreTheTriangles(scene, faces)) {
+  // (The fast path's triangles are the faces by construction.)
+  if ((simpleTriangles && faces.hidden.empty()) || FacesAreTheTriangles(scene, faces)) {
+    FreeAndReleasePages(faces.corners);  // a hole the planes do not fit in
     faces.Clear();
   } else {
     scene.source.faces = std::move(faces);
   }
 
   // Step 5: per-face planes, the faces split in ranges over the load threads.
-  scene.facePlanesWorld.reserve(faceCount);
-  AdviseHugePages(scene.facePlanesWorld);
-  scene.facePlanesWorld.resize(faceCount);
+  ResizeFaultedIn(scene.facePlanesWorld, faceCount);
   const int threads = LoadThreadCount(faceCount);
   RunOnLoadThreads(threads, [&scene, faceCount, threads](int part) {
     const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);

@@ -1,11 +1,17 @@
 #include "io/BinaryStlReader.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <new>
+#include <optional>
 #include <vector>
 
 #include "geometry/FirstOccurrence.h"
 #include "geometry/HugePages.h"
+#include "geometry/LoadThreads.h"
 
 namespace termshade {
 namespace {
@@ -13,12 +19,93 @@ namespace {
 constexpr size_t kHeaderBytes = 80;
 constexpr size_t kRecordBytes = 50;  // normal, 3 corners (12 floats), 2 attribute bytes
 constexpr size_t kFirstRecord = kHeaderBytes + 4;
+constexpr size_t kKeyBytes = 12;  // a corner's 3 floats
 
 uint32_t TriangleCount(std::string_view bytes) {
   uint32_t count = 0;
   std::memcpy(&count, bytes.data() + kHeaderBytes, sizeof count);
   return count;
 }
+
+// A key's 12 bytes in a part's compact key array, by vertex number.
+struct CompactKeyAt {
+  const char* keys = nullptr;
+  const char* operator()(size_t vertex) const { return keys + vertex * kKeyBytes; }
+};
+
+using KeyTable = FirstOccurrenceTable<kKeyBytes, CompactKeyAt>;
+
+// One run of triangles welded on its own: its distinct positions (12-byte
+// keys, first occurrence first) and a table of them; its corners' entries
+// in faceCorners become numbers among them.
+struct WeldPart {
+  size_t firstTriangle = 0;
+  size_t endTriangle = 0;
+  std::unique_ptr<char[]> keys;  ///< room for every key it may get, `distinct` written
+  uint32_t distinct = 0;
+  std::optional<KeyTable> table;
+
+  // Room for up to `most` keys (address space: untouched until written).
+  void Allocate(size_t most) {
+    keys.reset(new char[most * kKeyBytes]);
+    AdviseHugePages(keys.get(), most * kKeyBytes);
+    // A closed surface has about one vertex for 6 corners: the table starts
+    // there and grows if the file has more.
+    table.emplace(most / 5, CompactKeyAt{keys.get()});
+  }
+  const char* KeyAt(uint32_t vertex) const { return keys.get() + size_t{vertex} * kKeyBytes; }
+
+  // The number of the key at `key` (12 bytes), a new one when it is new.
+  uint32_t Insert(const char* key) { return InsertHashed(key, table->Hash(key)); }
+  uint32_t InsertHashed(const char* key, uint64_t hash) {
+    std::memcpy(keys.get() + size_t{distinct} * kKeyBytes, key, kKeyBytes);
+    const uint32_t number = table->FindOrInsert(distinct, hash);
+    if (number == distinct) ++distinct;
+    return number;
+  }
+
+  // Numbers the part's corners (in place in corners), reading its records
+  // in order, a batch at a time: hashes first and the table slots they
+  // start at prefetched, then the keys those slots hold, then the probes.
+  void Weld(std::string_view bytes, uint32_t* corners, FileBytes* owned) {
+    const char* records = bytes.data() + kFirstRecord;
+    const auto cornerAt = [records](size_t corner) {
+      return records + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
+    };
+    constexpr size_t kBatch = 32;
+    constexpr size_t kReleaseBytes = size_t{4} << 20;
+    uint64_t hashes[kBatch];
+    const size_t begin = 3 * firstTriangle, end = 3 * endTriangle;
+    size_t released = kFirstRecord + firstTriangle * kRecordBytes;
+    for (size_t batch = begin; batch < end; batch += kBatch) {
+      const size_t batchEnd = std::min(end, batch + kBatch);
+      for (size_t i = batch; i < batchEnd; ++i) {
+        hashes[i - batch] = table->Hash(cornerAt(i));
+        table->PrefetchSlot(hashes[i - batch]);
+      }
+      for (size_t i = batch; i < batchEnd; ++i) {
+        const uint32_t held = table->HeldAt(hashes[i - batch]);
+        if (held != KeyTable::kEmpty) __builtin_prefetch(KeyAt(held));
+      }
+      for (size_t i = batch; i < batchEnd; ++i) {
+        corners[i] = InsertHashed(cornerAt(i), hashes[i - batch]);
+      }
+      const size_t readTo = kFirstRecord + (batchEnd / 3) * kRecordBytes;
+      if (owned != nullptr && readTo >= released + kReleaseBytes) {
+        owned->Release(released, readTo);
+        released = readTo;
+      }
+    }
+  }
+
+  // Frees the keys and the table, their pages handed back (HugePages.h).
+  void Clear() {
+    if (table) table->ReleasePages();
+    table.reset();
+    ReleasePages(keys.get(), size_t{distinct} * kKeyBytes);
+    keys.reset();
+  }
+};
 
 }  // namespace
 
@@ -31,7 +118,13 @@ bool BinaryStlHasColours(std::string_view bytes) {
   return bytes.substr(0, kHeaderBytes).find("COLOR=") != std::string_view::npos;
 }
 
-Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std::string* owned) {
+Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, FileBytes* owned) {
+  const size_t corners = IsBinaryStlLayout(bytes) ? 3 * size_t{TriangleCount(bytes)} : 0;
+  return ReadBinaryStlInParts(bytes, path, static_cast<size_t>(LoadThreadCount(corners)), owned);
+}
+
+Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path,
+                                  size_t partCount, FileBytes* owned) {
   if (!IsBinaryStlLayout(bytes)) {
     return LoadError{path, 0, 0, "not a binary STL (size is not 84 + 50 x triangle count)"};
   }
@@ -40,58 +133,55 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, std:
   if (triangles >= UINT32_MAX / 3)
     return LoadError{path, 0, 0, "more triangles than 32-bit indices hold"};
 
-  // Step 1: each corner's first corner with bit-identical coordinates, read
-  // in place from the records (12 bytes a corner, 3 corners a record).
+  // Step 1: the corners in parts, one a load thread, each welded on its own
+  // (its distinct positions in first-occurrence order); the parts' records
+  // are handed back as they are read.
   const size_t cornerCount = triangles * 3;
-  const char* records = bytes.data() + kFirstRecord;
-  const auto cornerAt = [records](size_t corner) {
-    return records + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
-  };
   Mesh mesh;
   mesh.name = path;
-  mesh.faceCorners.reserve(cornerCount);
-  AdviseHugePages(mesh.faceCorners);
-  mesh.faceCorners.resize(cornerCount);
-  // A closed surface has about one vertex for 6 corners: the table starts
-  // there and grows if the file has more.
-  FindFirstOccurrences<12>(cornerCount, cornerAt, mesh.faceCorners.data(), cornerCount / 5);
-
-  // Step 2: vertices numbered by first occurrence (meshopt_generateVertexRemap's
-  // order); the faces' corners become those numbers.
-  size_t vertexCount = 0;
-  for (size_t i = 0; i < cornerCount; ++i) vertexCount += mesh.faceCorners[i] == i;
-  mesh.verticesFile.reserve(vertexCount);
-  AdviseHugePages(mesh.verticesFile);
-  // An owned file's records already read are handed back as the vertices
-  // grow, in whole 2 MiB pages, so what reuses them later faults in huge pages.
-  constexpr size_t kHugePage = size_t{1} << 21;
-  const auto start = owned != nullptr ? reinterpret_cast<uintptr_t>(owned->data()) : 0;
-  // The offset of the last huge-page boundary at or below offset (0 if none).
-  const auto boundaryBelow = [start](size_t offset) -> size_t {
-    const uintptr_t boundary = (start + offset) & ~uintptr_t{kHugePage - 1};
-    return boundary < start ? 0 : boundary - start;
-  };
-  size_t released = boundaryBelow(kHugePage - 1);  // the first boundary
-  for (size_t i = 0; i < cornerCount; ++i) {
-    if (owned != nullptr && i % 3 == 0) {
-      const size_t readTo = boundaryBelow(kFirstRecord + (i / 3) * kRecordBytes);
-      if (readTo >= released + 2 * kHugePage) {
-        ReleasePages(owned->data() + released, readTo - released);
-        released = readTo;
-      }
-    }
-    uint32_t& corner = mesh.faceCorners[i];
-    if (corner != i) {
-      corner = mesh.faceCorners[corner];  // an earlier corner, already numbered
-      continue;
-    }
-    float xyz[3];
-    std::memcpy(xyz, cornerAt(i), sizeof xyz);
-    corner = static_cast<uint32_t>(mesh.verticesFile.size());
-    mesh.verticesFile.push_back({xyz[0], xyz[1], xyz[2]});
+  ResizeFaultedIn(mesh.faceCorners, cornerCount);
+  partCount = std::clamp<size_t>(partCount, 1, triangles);
+  std::vector<WeldPart> parts(partCount);
+  for (size_t p = 0; p < partCount; ++p) {
+    parts[p].firstTriangle = triangles * p / partCount;
+    parts[p].endTriangle = triangles * (p + 1) / partCount;
+    // Part 0's keys take every part's new positions in step 2.
+    parts[p].Allocate(p == 0 ? cornerCount : 3 * (parts[p].endTriangle - parts[p].firstTriangle));
   }
+  std::atomic<bool> outOfMemory{false};
+  RunOnLoadThreads(static_cast<int>(partCount), [&](int p) {
+    try {
+      parts[static_cast<size_t>(p)].Weld(bytes, mesh.faceCorners.data(), owned);
+    } catch (const std::bad_alloc&) {
+      outOfMemory = true;
+    }
+  });
+  if (outOfMemory) throw std::bad_alloc();
 
-  if (owned != nullptr) FreeAndReleasePages(*owned);
+  // Step 2: each later part's new positions numbered after those before
+  // (part 0's table and keys grow to hold them all): the numbering of
+  // meshopt_generateVertexRemap, first occurrence first.
+  WeldPart& first = parts[0];
+  std::vector<uint32_t> globalOf;
+  for (size_t p = 1; p < partCount; ++p) {
+    globalOf.resize(parts[p].distinct);
+    for (uint32_t local = 0; local < parts[p].distinct; ++local) {
+      globalOf[local] = first.Insert(parts[p].KeyAt(local));
+    }
+    uint32_t* corners = mesh.faceCorners.data() + 3 * parts[p].firstTriangle;
+    const size_t count = 3 * (parts[p].endTriangle - parts[p].firstTriangle);
+    for (size_t i = 0; i < count; ++i) corners[i] = globalOf[corners[i]];
+    parts[p].Clear();
+  }
+  if (owned != nullptr) owned->Free();
+  FreeAndReleasePages(globalOf);
+  ResizeFaultedIn(mesh.verticesFile, first.distinct);
+  for (uint32_t v = 0; v < first.distinct; ++v) {
+    float xyz[3];
+    std::memcpy(xyz, first.KeyAt(v), sizeof xyz);
+    mesh.verticesFile[v] = {xyz[0], xyz[1], xyz[2]};
+  }
+  first.Clear();
 
   // Step 3: one face per triangle in file order.
   mesh.faceStarts.reserve(triangles + 1);

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "geometry/Mesh.h"
+#include "io/FileBytes.h"
 #include "io/LoadError.h"
 
 namespace termshade {
@@ -19,9 +20,16 @@ bool BinaryStlHasColours(std::string_view bytes);
 /// Reads a binary STL of that layout into one face per triangle, in file
 /// order. Exactly equal positions become one vertex (meshoptimizer's remap,
 /// first occurrence first), so shared edges are shared in the mesh. owned,
-/// when given, is the string bytes views: its pages are handed back as they
+/// when given, holds the bytes viewed: its pages are handed back as they
 /// are read, and it is freed (empty) once the mesh has the vertices.
+/// The records are welded in runs, one a load thread, whose positions are
+/// then numbered in file order (tables of 12-byte keys, not the records).
 Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path,
-                           std::string* owned = nullptr);
+                           FileBytes* owned = nullptr);
+
+/// ReadBinaryStl in partCount runs of triangles, each on its own thread:
+/// the same mesh for every partCount (what tests check).
+Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path,
+                                  size_t partCount, FileBytes* owned = nullptr);
 
 }  // namespace termshade

@@ -10,9 +10,12 @@
 #include <filesystem>
 #include <new>
 
+#include "geometry/HeapPolicy.h"
 #include "io/AssimpImport.h"
 #include "io/ContentSniff.h"
 #include "io/DatReader.h"
+#include "io/FileBytes.h"
+#include "io/FileBytesLoader.h"
 #include "io/LoadBudget.h"
 #include "io/OwnReaders.h"
 #include "io/RegularFile.h"
@@ -50,26 +53,35 @@ Loaded<Mesh> LoadDat(std::string_view bytes, const ModelPlace& place, const Load
   return mesh;
 }
 
-Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const ModelPlace& place,
+// A mapped file that shrank while it was read gave zeros for its lost
+// pages: whatever was read from it is refused.
+LoadError ShrankError(const std::string& name) {
+  return LoadError{name, 0, 0, "the file changed (it shrank) while it was read"};
+}
+
+Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const ModelPlace& place,
                           const LoadOptions& options) {
   const auto fail = [&](std::string message) {
     return LoadError{place.displayName, 0, 0, std::move(message)};
   };
   // Step 1: counts in the header against the bytes that follow it.
   if (format == "off" || format.empty()) {
-    if (auto problem = CheckHeaderCounts("off", bytes)) return fail(std::move(*problem));
+    if (auto problem = CheckHeaderCounts("off", bytes.View())) return fail(std::move(*problem));
   }
-  if (auto problem = CheckHeaderCounts("ply", bytes)) return fail(std::move(*problem));
+  if (auto problem = CheckHeaderCounts("ply", bytes.View())) return fail(std::move(*problem));
   const auto overBudget = [&](size_t needed) { return needed > options.memoryBudgetBytes; };
   // Step 2: a dedicated reader where one takes the file, within its own
   // estimate, then the mesh's real size (file still held) against the budget.
-  const auto ownNeeds = EstimateOwnReaderBytes(format, bytes.size());
+  const auto ownNeeds = EstimateOwnReaderBytes(format, bytes.Size());
   if (!options.importerOnly && ownNeeds) {
     if (overBudget(*ownNeeds)) return fail(OverBudgetMessage(*ownNeeds, options.memoryBudgetBytes));
     // The reader frees the file's bytes once it has read them.
-    const size_t fileBytes = bytes.size();
-    if (auto mesh = ReadWithOwnReader(bytes, format, place.displayName, options.memoryBudgetBytes,
-                                      &bytes)) {
+    const size_t fileBytes = bytes.Size();
+    constexpr size_t kBigFileBytes = size_t{16} << 20;
+    if (fileBytes >= kBigFileBytes) AdviseHugePagesForLoad(*ownNeeds);
+    if (auto mesh = ReadWithOwnReader(bytes.View(), format, place.displayName,
+                                      options.memoryBudgetBytes, &bytes)) {
+      if (bytes.Shrank()) return ShrankError(place.displayName);
       if (!mesh->Ok()) return std::move(*mesh);
       const Mesh& read = mesh->Value();
       const size_t needed =
@@ -80,7 +92,7 @@ Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const Mo
     }
   }
   // Step 3: the import's memory against the budget.
-  const size_t importNeeds = EstimateImportBytes(format, bytes.size());
+  const size_t importNeeds = EstimateImportBytes(format, bytes.Size());
   if (overBudget(importNeeds))
     return fail(OverBudgetMessage(importNeeds, options.memoryBudgetBytes));
   // Step 4: the import, under a name with the format's extension (Assimp picks
@@ -95,22 +107,32 @@ Loaded<Mesh> LoadImported(std::string bytes, const std::string& format, const Mo
     const std::string base = place.canonical.empty() ? "/standard-input" : place.canonical;
     source.importName = format.empty() ? base : base + "." + format;
   }
-  return ImportWithAssimp(source, std::move(bytes), options);
+  std::string text = bytes.TakeString();
+  if (bytes.Shrank()) return ShrankError(place.displayName);
+  return ImportWithAssimp(source, std::move(text), options);
 }
 
-Loaded<Mesh> LoadBytes(std::string bytes, const ModelPlace& place, const LoadOptions& options) {
+// A .dat read from a mapping is checked for a shrunk file after the parse.
+Loaded<Mesh> LoadDatBytes(const FileBytes& bytes, const ModelPlace& place,
+                          const LoadOptions& options) {
+  Loaded<Mesh> mesh = LoadDat(bytes.View(), place, options);
+  if (bytes.Shrank()) return ShrankError(place.displayName);
+  return mesh;
+}
+
+Loaded<Mesh> LoadBytes(FileBytes bytes, const ModelPlace& place, const LoadOptions& options) {
   // Step 1: the format: the hint, the extension, else the content.
   std::string format = Normalized(options.formatHint);
   if (format.empty()) format = LowerExtension(place.displayName);
-  if (format == "dat") return LoadDat(bytes, place, options);
+  if (format == "dat") return LoadDatBytes(bytes, place, options);
   const bool known = AssimpKnowsExtension(format);
-  if (bytes.empty()) return LoadError{place.displayName, 0, 0, "the file is empty"};
-  if (const auto what = RecognisedNonModel(bytes)) {
+  if (bytes.Size() == 0) return LoadError{place.displayName, 0, 0, "the file is empty"};
+  if (const auto what = RecognisedNonModel(bytes.View())) {
     if (!(IsZipBasedFormat(format) && what->find("ZIP") != std::string::npos)) {
       return LoadError{place.displayName, 0, 0, "not a model file (looks like " + *what + ")"};
     }
   }
-  if (!known && LooksLikeDat(bytes)) return LoadDat(bytes, place, options);
+  if (!known && LooksLikeDat(bytes.View())) return LoadDatBytes(bytes, place, options);
   return LoadImported(std::move(bytes), known ? format : "", place, options);
 }
 
@@ -146,6 +168,8 @@ Loaded<Mesh> WithDrawableSize(Loaded<Mesh> mesh) {
   return mesh;
 }
 
+Loaded<Mesh> LoadFileBytes(FileBytes bytes, const std::string& path, const LoadOptions& options);
+
 Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
   // Standard input: bounded by the budget, never a terminal.
   if (path == "-") {
@@ -155,7 +179,7 @@ Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
     Loaded<std::string> bytes =
         ReadStream(STDIN_FILENO, "-", options.memoryBudgetBytes, options.cancel);
     if (!bytes.Ok()) return bytes.Error();
-    return LoadBytes(std::move(bytes.Value()), ModelPlace{"-", "", ""}, options);
+    return LoadBytes(FileBytes(std::move(bytes.Value())), ModelPlace{"-", "", ""}, options);
   }
   // A file: regular only, no larger than the budget lets the smallest import be.
   const auto refuseSize = [&](size_t size) -> std::optional<std::string> {
@@ -164,12 +188,16 @@ Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
     return "the file is " + FormatBytes(static_cast<double>(size)) + "; " +
            OverBudgetMessage(needed, options.memoryBudgetBytes);
   };
-  Loaded<std::string> bytes = ReadRegularFile(path, refuseSize, options.cancel);
+  Loaded<FileBytes> bytes = FileBytes::MapRegularFile(path, refuseSize, options.cancel);
   if (!bytes.Ok()) return bytes.Error();
+  return LoadFileBytes(std::move(bytes.Value()), path, options);
+}
+
+Loaded<Mesh> LoadFileBytes(FileBytes bytes, const std::string& path, const LoadOptions& options) {
   std::error_code error;
   const std::filesystem::path canonical = std::filesystem::canonical(path, error);
   if (error) return LoadError{path, 0, 0, "cannot resolve the path: " + error.message()};
-  return LoadBytes(std::move(bytes.Value()),
+  return LoadBytes(std::move(bytes),
                    ModelPlace{path, canonical.parent_path().string(), canonical.string()}, options);
 }
 
@@ -190,11 +218,23 @@ bool UsesImporter(const std::string& path) {
 Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
                             const LoadOptions& options) {
   try {
-    return WithDrawableSize(LoadBytes(std::move(bytes), ModelPlace{name, "", ""}, options));
+    return WithDrawableSize(
+        LoadBytes(FileBytes(std::move(bytes)), ModelPlace{name, "", ""}, options));
   } catch (const std::bad_alloc&) {
     return LoadError{name, 0, 0, "ran out of memory while loading"};
   } catch (const std::exception& e) {
     return LoadError{name, 0, 0, std::string("cannot import: ") + e.what()};
+  }
+}
+
+Loaded<Mesh> LoadModelFileBytes(FileBytes bytes, const std::string& path,
+                                const LoadOptions& options) {
+  try {
+    return WithDrawableSize(LoadFileBytes(std::move(bytes), path, options));
+  } catch (const std::bad_alloc&) {
+    return LoadError{path, 0, 0, "ran out of memory while loading"};
+  } catch (const std::exception& e) {
+    return LoadError{path, 0, 0, std::string("cannot import: ") + e.what()};
   }
 }
 

@@ -70,9 +70,29 @@ uint64_t CountWords(std::string_view line) {
   return words;
 }
 
-ObjCounts CountObj(std::string_view text) {
+// Hands back a chunk's bytes as its lines are read, 4 MiB at a time
+// (FileBytes::Release); nothing without an owner.
+class ReleaseBehind {
+ public:
+  ReleaseBehind(FileBytes* owned, std::string_view file, std::string_view chunk)
+      : owned_(owned), file_(file.data()), released_(chunk.data()) {}
+  void ReadTo(const char* at) {
+    constexpr size_t kReleaseBytes = size_t{4} << 20;
+    if (owned_ == nullptr || static_cast<size_t>(at - released_) < kReleaseBytes) return;
+    owned_->Release(static_cast<size_t>(released_ - file_), static_cast<size_t>(at - file_));
+    released_ = at;
+  }
+
+ private:
+  FileBytes* owned_;
+  const char* file_;
+  const char* released_;
+};
+
+ObjCounts CountObj(std::string_view text, ReleaseBehind& release) {
   ObjCounts counts;
-  ForEachLine(text, [&counts](const Line& line) {
+  ForEachLine(text, [&counts, &release](const Line& line) {
+    release.ReadTo(line.text.data());
     ++counts.lines;
     const std::string_view keyword = Keyword(line.text);
     const bool continued = !line.text.empty() && line.text.back() == '\\';
@@ -269,7 +289,7 @@ std::string MemoryBudgetMessage(uint64_t neededBytes, uint64_t budgetBytes) {
 }  // namespace
 
 std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
-                                    size_t memoryBudgetBytes, std::string* owned) {
+                                    size_t memoryBudgetBytes, FileBytes* owned) {
   constexpr size_t kBytesPerItem = 64;  // about a line
   return ReadObjInChunks(text, path, memoryBudgetBytes,
                          static_cast<size_t>(LoadThreadCount(text.size() / kBytesPerItem)), owned);
@@ -277,13 +297,19 @@ std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& pa
 
 std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::string& path,
                                             size_t memoryBudgetBytes, size_t chunkCount,
-                                            std::string* owned) {
+                                            FileBytes* owned) {
   // Step 1: chunks of whole lines, one a thread; their counts, and whether the importer is needed.
   const std::vector<std::string_view> texts = SplitAtLines(text, std::max<size_t>(1, chunkCount));
   std::vector<ObjChunk> chunks(texts.size());
   for (size_t c = 0; c < texts.size(); ++c) chunks[c].text = texts[c];
-  RunOnLoadThreads(static_cast<int>(chunks.size()), [&chunks](int c) {
-    chunks[static_cast<size_t>(c)].counts = CountObj(chunks[static_cast<size_t>(c)].text);
+  // A mapped file's pages are handed back behind both passes (the second
+  // maps them again from the page cache): the file is never resident whole
+  // beside the mesh. Held bytes are not, as the importer may need them.
+  FileBytes* const countRelease = owned != nullptr && owned->Mapped() ? owned : nullptr;
+  RunOnLoadThreads(static_cast<int>(chunks.size()), [&](int c) {
+    ObjChunk& chunk = chunks[static_cast<size_t>(c)];
+    ReleaseBehind release(countRelease, text, chunk.text);
+    chunk.counts = CountObj(chunk.text, release);
   });
   ObjCounts counts;
   for (ObjChunk& chunk : chunks) {
@@ -327,17 +353,21 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
     cornersBefore += chunk.counts.corners;
     entriesBefore += chunk.counts.faces;
   }
-  RunOnLoadThreads(static_cast<int>(chunks.size()), [&chunks, &path](int c) {
+  RunOnLoadThreads(static_cast<int>(chunks.size()), [&](int c) {
     ObjChunk& chunk = chunks[static_cast<size_t>(c)];
     ObjParser parser(path, chunk);
-    ForEachLine(chunk.text, [&parser](const Line& line) { return parser.Line(line); });
+    ReleaseBehind release(owned, text, chunk.text);
+    ForEachLine(chunk.text, [&parser, &release](const Line& line) {
+      release.ReadTo(line.text.data());
+      return parser.Line(line);
+    });
   });
   for (const ObjChunk& chunk : chunks) {
     if (chunk.error) return Loaded<Mesh>(*chunk.error);
   }
 
   // Step 3: faces and segments in file order; an owned file is freed first.
-  if (owned != nullptr) FreeAndReleasePages(*owned);
+  if (owned != nullptr) owned->Free();
   MergeChunks(chunks, spans, mesh);
   mesh.edgeHidden.reserve(mesh.faceCorners.size());
   AdviseHugePages(mesh.edgeHidden);

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "geometry/Mesh.h"
+#include "io/FileBytes.h"
 #include "io/LoadError.h"
 
 namespace termshade {
@@ -20,16 +21,16 @@ namespace termshade {
 /// decodes and this reader does not (materials, vertex colours, free-form
 /// curves), so the caller hands it to Assimp.
 /// Files of a few MB up are read in chunks of whole lines, one a core.
-/// owned, when given, is the string text views: it is freed (empty) as soon
-/// as the geometry is parsed, before the rest of the mesh is built.
+/// owned, when given, holds the text viewed: it is freed (empty) as soon as
+/// the geometry is parsed, before the rest of the mesh is built.
 std::optional<Loaded<Mesh>> ReadObj(std::string_view text, const std::string& path,
-                                    size_t memoryBudgetBytes, std::string* owned = nullptr);
+                                    size_t memoryBudgetBytes, FileBytes* owned = nullptr);
 
 /// ReadObj with the text cut into chunkCount chunks of whole lines, each
 /// read on its own thread; the mesh and any error are the same for every
 /// chunkCount (what tests check).
 std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::string& path,
                                             size_t memoryBudgetBytes, size_t chunkCount,
-                                            std::string* owned = nullptr);
+                                            FileBytes* owned = nullptr);
 
 }  // namespace termshade

@@ -11,7 +11,7 @@ namespace {
 
 std::optional<Loaded<Mesh>> ReadByFormat(std::string_view bytes, const std::string& format,
                                          const std::string& displayName, size_t memoryBudgetBytes,
-                                         std::string* owned) {
+                                         FileBytes* owned) {
   if (format == "stl") {
     if (!IsBinaryStlLayout(bytes) || BinaryStlHasColours(bytes)) return std::nullopt;
     return ReadBinaryStl(bytes, displayName, owned);
@@ -25,11 +25,11 @@ std::optional<Loaded<Mesh>> ReadByFormat(std::string_view bytes, const std::stri
 
 std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std::string& format,
                                               const std::string& displayName,
-                                              size_t memoryBudgetBytes, std::string* owned) {
+                                              size_t memoryBudgetBytes, FileBytes* owned) {
   std::optional<Loaded<Mesh>> read =
       ReadByFormat(bytes, format, displayName, memoryBudgetBytes, owned);
   if (!read || !read->Ok()) return read;
-  if (owned != nullptr) FreeAndReleasePages(*owned);  // before the weld's tables
+  if (owned != nullptr) owned->Free();  // before the weld's tables
   Mesh& mesh = read->Value();
   mesh.name = displayName;
   mesh.upAxisFile = format == "stl" ? UpAxis::kPlusZ : UpAxis::kPlusY;

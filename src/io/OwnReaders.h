@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "geometry/Mesh.h"
+#include "io/FileBytes.h"
 #include "io/LoadError.h"
 
 namespace termshade {
@@ -15,12 +16,12 @@ namespace termshade {
 /// `format` is the lower-case extension. nullopt when none of them takes the
 /// file (another format, ASCII STL, colours or materials), so the caller
 /// imports it with Assimp. Positions are welded as on the Assimp path, and
-/// the up axis is the format's convention (SPEC 10). owned, when given, is
-/// the string bytes views, freed (empty) once a reader has taken the file
+/// the up axis is the format's convention (SPEC 10). owned, when given,
+/// holds the bytes viewed: freed (empty) once a reader has taken the file
 /// (as early as the reader can); left whole when the result is nullopt.
 std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std::string& format,
                                               const std::string& displayName,
                                               size_t memoryBudgetBytes,
-                                              std::string* owned = nullptr);
+                                              FileBytes* owned = nullptr);
 
 }  // namespace termshade

@@ -2,7 +2,8 @@
 // plain forms. The first byte picks a chunk count; the rest is read as an
 // OBJ in one chunk and in that many, welded in one step and in two (weld,
 // then first-use numbering), and, as 12-byte keys, numbered by first
-// occurrence and by meshoptimizer's remap. Any difference aborts.
+// occurrence and by meshoptimizer's remap, and as the corners of a binary
+// STL, welded in one run and in that many. Any difference aborts.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -16,6 +17,7 @@
 #include "geometry/FirstOccurrence.h"
 #include "geometry/FirstUseOrder.h"
 #include "geometry/WeldVertices.h"
+#include "io/BinaryStlReader.h"
 #include "io/ObjReader.h"
 
 namespace {
@@ -65,6 +67,28 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < keys; ++i) {
     if (firstOfRemap[remap[i]] == UINT32_MAX) firstOfRemap[remap[i]] = static_cast<uint32_t>(i);
     if (first[i] != firstOfRemap[remap[i]]) std::abort();
+  }
+
+  // A binary STL of those corners (3 keys a record) in runs against one run.
+  const size_t triangles = keys / 3;
+  if (triangles > 0) {
+    std::string stl(80, '\0');
+    const auto count = static_cast<uint32_t>(triangles);
+    stl.append(reinterpret_cast<const char*>(&count), 4);
+    for (size_t t = 0; t < triangles; ++t) {
+      stl.append(12, '\0');
+      stl.append(text.substr(t * 36, 36));
+      stl.append(2, '\0');
+    }
+    Loaded<Mesh> whole = ReadBinaryStlInParts(stl, "fuzz.stl", 1);
+    Loaded<Mesh> split = ReadBinaryStlInParts(stl, "fuzz.stl", parts);
+    if (!whole.Ok() || !split.Ok()) std::abort();
+    const Mesh &a = whole.Value(), &b = split.Value();
+    if (a.faceCorners != b.faceCorners || a.verticesFile.size() != b.verticesFile.size() ||
+        std::memcmp(a.verticesFile.data(), b.verticesFile.data(),
+                    a.verticesFile.size() * sizeof(Vec3)) != 0) {
+      std::abort();
+    }
   }
 
   // The one-step weld against weld then first-use numbering, on the OBJ's mesh.

@@ -34,26 +34,6 @@ std::string MappedFilesContaining(const std::string& part) {
   return found;
 }
 
-// A folder of this test's own, removed at the end.
-class ModelFolder {
- public:
-  ModelFolder()
-      : path_(fs::temp_directory_path() / ("termshade-module-" + std::to_string(getpid()))) {
-    fs::create_directories(path_);
-  }
-  ModelFolder(const ModelFolder&) = delete;
-  ModelFolder& operator=(const ModelFolder&) = delete;
-  ~ModelFolder() { fs::remove_all(path_); }
-  std::string Write(const std::string& name, const std::string& bytes) const {
-    const std::string file = (path_ / name).string();
-    std::ofstream(file, std::ios::binary) << bytes;
-    return file;
-  }
-
- private:
-  fs::path path_;
-};
-
 // The mesh as an OFF file, a format only Assimp reads here.
 std::string OffText(const Mesh& mesh) {
   char number[96];
@@ -83,7 +63,7 @@ Mesh LoadOrFail(const std::string& path) {
 
 TEST(AssimpModule, IsNotLoadedForDatObjStlOrPly) {
   ASSERT_EQ(MappedFilesContaining("assimp"), "") << "mapped before any load";
-  const ModelFolder folder;
+  const test::ScratchFolder folder("termshade-module");
   const Mesh sphere = GenerateTriangleSphere(500);
   for (const auto& [name, format] :
        {std::pair{"m.obj", ExportFormat::kObj}, std::pair{"m.stl", ExportFormat::kStl},
@@ -97,7 +77,7 @@ TEST(AssimpModule, IsNotLoadedForDatObjStlOrPly) {
 }
 
 TEST(AssimpModule, IsLoadedForOffAndGivesTheSameFrame) {
-  const ModelFolder folder;
+  const test::ScratchFolder folder("termshade-module");
   const Mesh sphere = GenerateTriangleSphere(500);
   const Mesh own = LoadOrFail(folder.Write("m.obj", ExportMesh(sphere, ExportFormat::kObj)));
   EXPECT_EQ(MappedFilesContaining("assimp"), "");

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -14,6 +17,23 @@ namespace termshade::test {
 
 std::string SourcePath(const std::string& relative) {
   return std::string(TERMSHADE_SOURCE_DIR) + "/" + relative;
+}
+
+ScratchFolder::ScratchFolder(const std::string& name)
+    : path_((std::filesystem::temp_directory_path() / (name + "-" + std::to_string(getpid())))
+                .string()) {
+  std::filesystem::create_directories(path_);
+}
+
+ScratchFolder::~ScratchFolder() {
+  std::error_code error;
+  std::filesystem::remove_all(path_, error);
+}
+
+std::string ScratchFolder::Write(const std::string& name, const std::string& bytes) const {
+  const std::string file = (std::filesystem::path(path_) / name).string();
+  std::ofstream(file, std::ios::binary) << bytes;
+  return file;
 }
 
 std::string ReadFile(const std::string& path) {

@@ -20,6 +20,21 @@ std::string SourcePath(const std::string& relative);
 /// Reads a whole file (empty string if it cannot be read).
 std::string ReadFile(const std::string& path);
 
+/// A folder of a test's own under the temporary folder (name plus the
+/// process id), removed with its files at the end.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(const std::string& name);
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  ~ScratchFolder();
+  /// Writes a file of these bytes in the folder; its path.
+  std::string Write(const std::string& name, const std::string& bytes) const;
+
+ private:
+  std::string path_;
+};
+
 /// Loads a model from the source tree; fails the test on error (then an empty mesh).
 Mesh LoadMesh(const std::string& relative);
 

@@ -1,0 +1,127 @@
+#include "io/FileBytes.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+
+#include "geometry/HugePages.h"
+#include "io/FileMapGuard.h"
+#include "io/RegularFile.h"
+
+namespace termshade {
+
+FileBytes::FileBytes(FileBytes&& other) noexcept
+    : text_(std::move(other.text_)),
+      mapped_(other.mapped_),
+      mappedBytes_(other.mappedBytes_),
+      guardSlot_(other.guardSlot_),
+      shrank_(other.shrank_) {
+  other.mapped_ = nullptr;
+  other.mappedBytes_ = 0;
+  other.guardSlot_ = -1;
+}
+
+FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
+  if (this == &other) return *this;
+  Free();
+  text_ = std::move(other.text_);
+  mapped_ = other.mapped_;
+  mappedBytes_ = other.mappedBytes_;
+  guardSlot_ = other.guardSlot_;
+  shrank_ = other.shrank_;
+  other.mapped_ = nullptr;
+  other.mappedBytes_ = 0;
+  other.guardSlot_ = -1;
+  return *this;
+}
+
+Loaded<FileBytes> FileBytes::MapRegularFile(
+    const std::string& path, const std::function<std::optional<std::string>(size_t)>& refuseSize,
+    const std::atomic<bool>* cancel) {
+  // Step 1: open without blocking and look at what it is (as ReadRegularFile).
+  const int fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) return LoadError{path, 0, 0, std::string("cannot open: ") + std::strerror(errno)};
+  struct stat info {};
+  const bool statted = fstat(fd, &info) == 0;
+  const bool mappable = statted && S_ISREG(info.st_mode) && info.st_size > 0;
+  void* mapped = MAP_FAILED;
+  if (mappable && !refuseSize(static_cast<size_t>(info.st_size))) {
+    mapped = mmap(nullptr, static_cast<size_t>(info.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+  }
+  close(fd);
+  // Step 2: anything not mapped (refused, empty, not regular, no mapping or
+  // no watch slot) is read instead, which gives the message where one is due.
+  const auto readInstead = [&]() -> Loaded<FileBytes> {
+    Loaded<std::string> text = ReadRegularFile(path, refuseSize, cancel);
+    if (!text.Ok()) return text.Error();
+    return FileBytes(std::move(text.Value()));
+  };
+  if (mapped == MAP_FAILED) return readInstead();
+  const auto size = static_cast<size_t>(info.st_size);
+  const int slot = WatchMappedRange(mapped, size);
+  if (slot < 0) {
+    munmap(mapped, size);
+    return readInstead();
+  }
+  // Read ahead now where the file is not cached yet.
+  madvise(mapped, size, MADV_WILLNEED);
+  FileBytes bytes;
+  if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
+    StopWatchingMappedRange(slot);
+    munmap(mapped, size);
+    return LoadError{path, 0, 0, "loading cancelled"};
+  }
+  bytes.mapped_ = static_cast<const char*>(mapped);
+  bytes.mappedBytes_ = size;
+  bytes.guardSlot_ = slot;
+  return bytes;
+}
+
+std::string_view FileBytes::View() const {
+  if (mapped_ != nullptr) return {mapped_, mappedBytes_};
+  return text_;
+}
+
+void FileBytes::Release(size_t begin, size_t end) {
+  if (mapped_ == nullptr) {
+    if (end > begin && end <= text_.size()) ReleasePages(text_.data() + begin, end - begin);
+    return;
+  }
+  if (end <= begin || end > mappedBytes_) return;
+  const auto pageBytes = static_cast<uintptr_t>(sysconf(_SC_PAGESIZE));
+  const auto base = reinterpret_cast<uintptr_t>(mapped_);
+  const uintptr_t first = (base + begin + pageBytes - 1) & ~(pageBytes - 1);
+  const uintptr_t last = (base + end) & ~(pageBytes - 1);
+  // A private mapping never written: the pages leave this process, the
+  // page cache keeps them.
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+}
+
+void FileBytes::Free() {
+  if (mapped_ != nullptr) {
+    shrank_ = StopWatchingMappedRange(guardSlot_) || shrank_;
+    munmap(const_cast<char*>(mapped_), mappedBytes_);
+    mapped_ = nullptr;
+    mappedBytes_ = 0;
+    guardSlot_ = -1;
+  }
+  FreeAndReleasePages(text_);
+}
+
+std::string FileBytes::TakeString() {
+  if (mapped_ == nullptr) return std::move(text_);
+  std::string text(View());
+  Free();
+  return text;
+}
+
+bool FileBytes::Shrank() const {
+  return shrank_ || (mapped_ != nullptr && MappedRangeShrank(guardSlot_));
+}
+
+}  // namespace termshade

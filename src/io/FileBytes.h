@@ -1,0 +1,63 @@
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "io/LoadError.h"
+
+namespace termshade {
+
+/// A model file's bytes: held in a string (standard input, tests), or mapped
+/// read-only from a regular file, so the load neither zeroes nor copies
+/// memory for them (on this kind of machine fresh memory costs about 1 ms a
+/// MB to fault in, the page cache's pages a tenth of that).
+/// A mapped file that shrinks while it is read would raise SIGBUS at the
+/// pages past its new end; a guard (FileMapGuard.h) maps zeros there instead
+/// and marks the bytes Shrank(), which the loader turns into an error.
+class FileBytes {
+ public:
+  FileBytes() = default;
+  explicit FileBytes(std::string text) : text_(std::move(text)) {}
+  FileBytes(FileBytes&& other) noexcept;
+  FileBytes& operator=(FileBytes&& other) noexcept;
+  FileBytes(const FileBytes&) = delete;
+  FileBytes& operator=(const FileBytes&) = delete;
+  ~FileBytes() { Free(); }
+
+  /// Maps a regular file (O_NONBLOCK, fstat first: a FIFO, device, socket or
+  /// folder is refused at once). refuseSize sees the size before anything is
+  /// mapped and may refuse it with a message. A load already cancelled
+  /// (cancel may be null) is "loading cancelled".
+  static Loaded<FileBytes> MapRegularFile(
+      const std::string& path, const std::function<std::optional<std::string>(size_t)>& refuseSize,
+      const std::atomic<bool>* cancel = nullptr);
+
+  std::string_view View() const;
+  size_t Size() const { return View().size(); }
+  bool Mapped() const { return mapped_ != nullptr; }
+
+  /// Hands back the memory of the whole pages inside [begin, end) (byte
+  /// offsets): bytes already parsed that will not be read again. They read
+  /// as zeros (held) or as the file again (mapped) if they are.
+  void Release(size_t begin, size_t end);
+  /// Frees the bytes (empty after); Shrank() keeps its answer.
+  void Free();
+  /// The bytes in a string (a mapping is copied, then freed), for the importer.
+  std::string TakeString();
+  /// A mapped file was found shorter than when it was mapped: some bytes
+  /// read were zeros, not the file's.
+  bool Shrank() const;
+
+ private:
+  std::string text_;
+  const char* mapped_ = nullptr;
+  size_t mappedBytes_ = 0;
+  int guardSlot_ = -1;
+  bool shrank_ = false;
+};
+
+}  // namespace termshade

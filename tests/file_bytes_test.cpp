@@ -1,0 +1,139 @@
+// Model files mapped instead of read: the same bytes and the same mesh as
+// read() and as Assimp, and a file that shrinks under its mapping gives a
+// clean error, never SIGBUS.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "geometry/Scene.h"
+#include "io/FileBytes.h"
+#include "io/FileBytesLoader.h"
+#include "io/FileMapGuard.h"
+#include "io/MeshExport.h"
+#include "io/ModelLoader.h"
+#include "io/OwnReaders.h"
+#include "io/SceneGenerators.h"
+#include "support/TestSupport.h"
+
+namespace termshade {
+namespace {
+
+namespace fs = std::filesystem;
+
+const auto kAnySize = [](size_t) -> std::optional<std::string> { return std::nullopt; };
+
+bool SameMesh(const Mesh& a, const Mesh& b) {
+  return a.faceCorners == b.faceCorners && a.faceStarts == b.faceStarts &&
+         a.upAxisFile == b.upAxisFile && a.verticesFile.size() == b.verticesFile.size() &&
+         std::memcmp(a.verticesFile.data(), b.verticesFile.data(),
+                     a.verticesFile.size() * sizeof(Vec3)) == 0;
+}
+
+TEST(FileBytes, MappedBytesAreTheFile) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const std::string bytes = ExportMesh(GenerateTriangleSphere(2000), ExportFormat::kStl);
+  const std::string path = folder.Write("sphere.stl", bytes);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok());
+  EXPECT_TRUE(mapped.Value().Mapped());
+  EXPECT_EQ(mapped.Value().View(), bytes);
+  // Pages handed back read as the file again.
+  mapped.Value().Release(0, bytes.size());
+  EXPECT_EQ(mapped.Value().View(), bytes);
+  EXPECT_FALSE(mapped.Value().Shrank());
+  EXPECT_EQ(mapped.Value().TakeString(), bytes);
+  EXPECT_EQ(mapped.Value().Size(), 0U);
+}
+
+TEST(FileBytes, EmptyFilesAndFoldersAreReadNotMapped) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  Loaded<FileBytes> empty = FileBytes::MapRegularFile(folder.Write("empty.stl", ""), kAnySize);
+  ASSERT_TRUE(empty.Ok());
+  EXPECT_EQ(empty.Value().Size(), 0U);
+  Loaded<FileBytes> dir = FileBytes::MapRegularFile(fs::temp_directory_path().string(), kAnySize);
+  ASSERT_FALSE(dir.Ok());
+  EXPECT_NE(dir.Error().message.find("folder"), std::string::npos);
+}
+
+// Every format our readers take, from a mapping, equals the read() path and
+// the importer's mesh.
+TEST(FileBytes, MappedLoadGivesTheSameMeshAsReadAndAsAssimp) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const Mesh sphere = GenerateTriangleSphere(20'000);
+  for (const auto& [format, exportFormat] :
+       {std::pair{"obj", ExportFormat::kObj}, std::pair{"stl", ExportFormat::kStl},
+        std::pair{"ply", ExportFormat::kPly}}) {
+    const std::string bytes = ExportMesh(sphere, exportFormat);
+    const std::string path = folder.Write(std::string("sphere.") + format, bytes);
+    Loaded<Mesh> mapped = LoadModelFile(path);
+    LoadOptions fromString;
+    fromString.formatHint = format;
+    Loaded<Mesh> read = LoadModelBytes(bytes, path, fromString);
+    LoadOptions reference;
+    reference.importerOnly = true;
+    Loaded<Mesh> imported = LoadModelFile(path, reference);
+    ASSERT_TRUE(mapped.Ok() && read.Ok() && imported.Ok()) << format;
+    EXPECT_TRUE(SameMesh(mapped.Value(), read.Value())) << format;
+    const Scene a = PrepareScene(std::move(mapped.Value()));
+    const Scene b = PrepareScene(std::move(imported.Value()));
+    EXPECT_EQ(test::RenderFrame(a, 0.3, 1.3, 60, 20, RenderOptions{}).Text(),
+              test::RenderFrame(b, 0.3, 1.3, 60, 20, RenderOptions{}).Text())
+        << format;
+  }
+}
+
+// The file cut to half its size after it was mapped: the reader sees zeros
+// past the new end instead of SIGBUS, and the load is refused.
+TEST(FileBytes, FileShrunkUnderTheMappingIsACleanError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const std::string bytes = ExportMesh(GenerateTriangleSphere(20'000), ExportFormat::kStl);
+  for (const char* name : {"cut.stl", "cut_loader.stl"}) {
+    const std::string path = folder.Write(name, bytes);
+    Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+    ASSERT_TRUE(mapped.Ok());
+    ASSERT_TRUE(mapped.Value().Mapped());
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(bytes.size() / 2)), 0);
+    if (std::string(name) == "cut.stl") {
+      FileBytes& file = mapped.Value();
+      auto read = ReadWithOwnReader(file.View(), "stl", path, size_t{1} << 30, &file);
+      EXPECT_TRUE(read.has_value());
+      EXPECT_TRUE(file.Shrank());
+    } else {
+      Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
+      ASSERT_FALSE(mesh.Ok());
+      EXPECT_NE(mesh.Error().ToString().find("cut_loader.stl: the file changed (it shrank) while it was read"),
+                std::string::npos)
+          << mesh.Error().ToString();
+    }
+  }
+}
+
+// A SIGBUS outside every watched mapping still ends the process (by the
+// signal, or by the handler that was there before, such as a sanitizer's).
+TEST(FileBytesDeathTest, ForeignBusErrorsStillEndTheProcess) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const std::string path = folder.Write("foreign.bin", std::string(1 << 16, 'x'));
+  EXPECT_DEATH(
+      {
+        const int watch = WatchMappedRange(nullptr, 0);  // installs the handler
+        StopWatchingMappedRange(watch);
+        std::FILE* file = std::fopen(path.c_str(), "rb");
+        void* mapped = mmap(nullptr, 1 << 16, PROT_READ, MAP_PRIVATE, fileno(file), 0);
+        [[maybe_unused]] const int cut = truncate(path.c_str(), 0);
+        const volatile char* bytes = static_cast<const char*>(mapped);
+        [[maybe_unused]] const char byte = bytes[100];
+        std::exit(0);
+      },
+      "");
+}
+
+}  // namespace
+}  // namespace termshade
