@@ -10,6 +10,7 @@
 #include "geometry/FitCamera.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
+#include "raster/SampledRasterizer.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -75,10 +76,12 @@ void CompareOn(const Scene& scene, const std::string& name, int cols, int rows, 
               name + " view " + std::to_string(v) + " " + std::string(MethodName(method)) + " " +
               std::string(GlyphModeName(options.glyphs)) + " flags " + std::to_string(flags) + " " +
               std::to_string(cols) + "x" + std::to_string(rows);
-          const Frame reference = Draw(referenceRenderer, scene, camera, options, false, cols, rows);
+          const Frame reference =
+              Draw(referenceRenderer, scene, camera, options, false, cols, rows);
           ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows), reference,
                      options.keepDepth, what);
-          if (FrameSampleGrid(options) == SampleGrid{2, 4}) {  // the four-lane path of 2x4 cells too
+          if (FrameSampleGrid(options) ==
+              SampleGrid{2, 4}) {  // the four-lane path of 2x4 cells too
             options.variant.wideLanes = false;
             ExpectSame(Draw(sampledRenderer, scene, camera, options, true, cols, rows), reference,
                        options.keepDepth, what + " four lanes");
@@ -87,6 +90,13 @@ void CompareOn(const Scene& scene, const std::string& name, int cols, int rows, 
       }
     }
   }
+}
+
+// The comparisons above take the eight-lane path only where the CPU has
+// AVX2; elsewhere this test shows as skipped, so a run that never exercised
+// that path says so.
+TEST(SampledRasterizer, EightLanePathIsExercisedHere) {
+  if (!SampledRasterizer::WideAvailable()) GTEST_SKIP() << "no AVX2: only the four-lane path ran";
 }
 
 TEST(SampledRasterizer, EverySampleAsTheOneSampleRasterizerOnShippedScenes) {
@@ -112,7 +122,8 @@ TEST(SampledRasterizer, ARendererMovedToAnotherSceneDrawsAsAFreshOne) {
       for (const Scene& second : scenes) {
         const Camera firstCamera =
             FitCamera(first, DefaultView(first.diagonalModelUnits), 48, 16, 2.0);
-        const Camera camera = FitCamera(second, DefaultView(second.diagonalModelUnits), 48, 16, 2.0);
+        const Camera camera =
+            FitCamera(second, DefaultView(second.diagonalModelUnits), 48, 16, 2.0);
         Draw(moved, first, firstCamera, options, true, 48, 16);
         Renderer fresh;
         ExpectSame(Draw(moved, second, camera, options, true, 48, 16),

@@ -174,11 +174,17 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   RenderStats stats;
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
   BeginSeenFaces(scene);
-  // The faces the samples show, without a branch a sample (where faces are
-  // first seen is unpredictable): background looks up a slot past the faces
-  // that reads as seen; every sample's face is written to the list, which
-  // grows only by the new ones.
-  const size_t faceCount = scene.FaceCount();
+  ListSampledFaces(scene.FaceCount());
+  ShadeSeenFaces(scene, single);
+  stats.facesVisible = EndSeenFaces();
+  return stats;
+}
+
+// The faces the samples show, without a branch a sample (where faces are
+// first seen is unpredictable): background looks up a slot past the faces
+// that reads as seen; every sample's face is written to the list, which
+// grows only by the new ones.
+void Renderer::ListSampledFaces(size_t faceCount) {
   faceLevels_.resize(faceCount + 1);
   faceLevels_[faceCount] = 0;
   int16_t* const levels = faceLevels_.data();
@@ -187,7 +193,8 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   const size_t cellCount = sampleFrame_.CellCount();
   for (size_t cell = sampleFrame_.NextTouched(0); cell < cellCount;
        cell = sampleFrame_.NextTouched(cell + 1)) {
-    if (seenFaces_.size() < seen + perCell) seenFaces_.resize(seen + perCell);  // grows as push_back
+    if (seenFaces_.size() < seen + perCell)
+      seenFaces_.resize(seen + perCell);  // grows as push_back
     uint32_t* const list = seenFaces_.data();
     for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
       const uint32_t face = faceNumber == 0 ? static_cast<uint32_t>(faceCount) : faceNumber - 1;
@@ -199,9 +206,6 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   }
   seenFaces_.resize(seen);
   faceLevels_[faceCount] = -1;  // every level -1 between frames, as BeginSeenFaces expects
-  ShadeSeenFaces(scene, single);
-  stats.facesVisible = EndSeenFaces();
-  return stats;
 }
 
 const CellBuffer& Renderer::Samples() const {

@@ -66,6 +66,8 @@ class Renderer {
   int ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells);
   void BeginSeenFaces(const Scene& scene);
   void MarkSeenFaces(std::span<const uint32_t> faceNumbers);
+  /// Lists the faces sampleFrame_ shows in seenFaces_ (between BeginSeenFaces and ShadeSeenFaces).
+  void ListSampledFaces(size_t faceCount);
   void ShadeSeenFaces(const Scene& scene, const RenderOptions& options);
   int EndSeenFaces();
 

@@ -41,8 +41,10 @@ struct Setup {
   float k0, k1, k2;    // as DepthInterpolator<kFloatInverseZ>
 };
 
-inline __attribute__((always_inline)) Setup MakeSetup(const RasterVertex& v0, const RasterVertex& v1, const RasterVertex& v2,
-                int64_t area, int64_t originX, int64_t originY) {
+inline __attribute__((always_inline)) Setup MakeSetup(const RasterVertex& v0,
+                                                      const RasterVertex& v1,
+                                                      const RasterVertex& v2, int64_t area,
+                                                      int64_t originX, int64_t originY) {
   const float invArea = 1.0F / static_cast<float>(area);
   return {MakeEdge(v1, v2, originX, originY),
           MakeEdge(v2, v0, originX, originY),
@@ -201,7 +203,8 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
 // operations lane by lane; no FMA, so products and sums round as before).
 typedef int32_t Int8 __attribute__((vector_size(32)));
 typedef float Float8 __attribute__((vector_size(32)));
-typedef long long Long4 __attribute__((vector_size(32)));  // NOLINT(google-runtime-int): ptest's type
+typedef long long Long4
+    __attribute__((vector_size(32)));  // NOLINT(google-runtime-int): ptest's type
 
 template <int K, int M, DepthRule kRule>
 __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const RasterVertex& v1,

@@ -1,12 +1,17 @@
 #include "shade/AsciiMatcher.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
 #include "shade/GlyphInk.h"
 
 namespace termshade {
+
+// ByteKey builds keys by shifts and MatchKey reads them back as bytes.
+static_assert(std::endian::native == std::endian::little, "cache keys assume little-endian bytes");
+
 namespace {
 
 constexpr size_t kCacheSize = size_t{1} << 12;

@@ -13,7 +13,7 @@ namespace termshade {
 /// the regions a cell's samples sit in; a cell takes the glyph nearest its
 /// samples (brightness scaled to the most mean ink any glyph has). Integer
 /// arithmetic; ties go to the lower code point. Results are
-/// memoized per quantized sample vector (4 bits a sample), so a frame costs
+/// memoized per quantized sample vector (a level 0..15 a sample), so a frame costs
 /// one table probe per cell for the values seen before; the cache does not
 /// change any result.
 class AsciiMatcher {
