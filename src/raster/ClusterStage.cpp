@@ -7,6 +7,7 @@
 #include "geometry/FixedRange.h"
 #include "geometry/HugePages.h"
 #include "geometry/ViewingTransform.h"
+#include "raster/ClipToRaster.h"
 #include "raster/FixedPoint.h"
 #include "raster/VertexStage.h"
 
@@ -74,29 +75,6 @@ bool ClusterMayShow(const SceneCluster& cluster, const ClusterFrame& frame, int 
   return frame.floatGeometry || SphereMayCover(cluster, frame, width, height);
 }
 
-RasterVertex ToRaster(const CellPoint& p) {
-  return {SnapToFixed(p.u), SnapToFixed(p.v), static_cast<float>(p.w)};
-}
-
-// A triangle crossing a clip plane: clipped in eye space from the world
-// corners, projected; returns the polygon's corner count (< 3: nothing).
-size_t ClipToRaster(const Scene& scene, const ClusterFrame& frame, uint32_t triangle,
-                    std::array<RasterVertex, 10>& projected) {
-  const SceneTriangle& t = scene.triangles[triangle];
-  const std::array<Vec3, 3> cornersEye{
-      TransformPoint(frame.eyeFromWorld, scene.verticesWorld[t.vertices[0]]),
-      TransformPoint(frame.eyeFromWorld, scene.verticesWorld[t.vertices[1]]),
-      TransformPoint(frame.eyeFromWorld, scene.verticesWorld[t.vertices[2]])};
-  if (!IsFinite(cornersEye[0]) || !IsFinite(cornersEye[1]) || !IsFinite(cornersEye[2])) return 0;
-  ClippedPolygon clipped;
-  ClipTriangle(cornersEye, frame.clipPlanes, clipped);
-  if (clipped.count < 3) return 0;
-  for (size_t i = 0; i < clipped.count; ++i) {
-    projected[i] = ToRaster(ProjectToCell(frame.projection, clipped.corners[i]));
-  }
-  return clipped.count;
-}
-
 // One cluster's triangles in order, each that may cover a sample handed to
 // emit(a, b, c, faceNumber) (a clipped one as its fan). allFront: the cone
 // showed every face front-facing. Returns the triangles counted as drawn.
@@ -120,8 +98,9 @@ int SetUpCluster(const Scene& scene, const SceneCluster& cluster, const ClusterF
     const auto& v = triangles[t].vertices;
     if ((codes[v[0]] | codes[v[1]] | codes[v[2]]) != 0) {
       if ((codes[v[0]] & codes[v[1]] & codes[v[2]]) != 0) continue;
-      std::array<RasterVertex, 10> polygon{};
-      const size_t count = ClipToRaster(scene, frame, t, polygon);
+      std::array<RasterVertex, kClippedCornersMax> polygon{};
+      const size_t count =
+          ClipToRaster(scene, t, frame.eyeFromWorld, frame.clipPlanes, frame.projection, polygon);
       if (count < 3) continue;
       for (size_t i = 1; i + 1 < count; ++i) emit(polygon[0], polygon[i], polygon[i + 1], face + 1);
       ++drawn;

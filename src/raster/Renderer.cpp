@@ -5,6 +5,7 @@
 
 #include "geometry/HugePages.h"
 #include "geometry/ViewingTransform.h"
+#include "raster/ClipToRaster.h"
 #include "raster/FixedPoint.h"
 #include "raster/LineRasterizer.h"
 #include "raster/SampledRasterizer.h"
@@ -12,10 +13,6 @@
 
 namespace termshade {
 namespace {
-
-RasterVertex ToRaster(const CellPoint& p) {
-  return {SnapToFixed(p.u), SnapToFixed(p.v), static_cast<float>(p.w)};
-}
 
 // The near plane sits a tiny, scale-relative distance in front of the eye.
 double NearDistance(const Scene& scene) {
@@ -252,21 +249,12 @@ int Renderer::DrawTriangle(const Scene& scene, const Camera& camera, uint32_t tr
     return 1;
   }
   if ((codes[0] & codes[1] & codes[2]) != 0) return 0;
-  // Rare: recompute eye coordinates rather than store them for every vertex.
-  const std::array<Vec3, 3> cornersEye{
-      TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[0]]),
-      TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[1]]),
-      TransformPoint(eyeFromWorld_, scene.verticesWorld[t.vertices[2]])};
-  if (!IsFinite(cornersEye[0]) || !IsFinite(cornersEye[1]) || !IsFinite(cornersEye[2])) return 0;
-  ClippedPolygon clipped;
-  ClipTriangle(cornersEye, clipPlanes_, clipped);
-  if (clipped.count < 3) return 0;
+  std::array<RasterVertex, kClippedCornersMax> projected{};
+  const size_t count =
+      ClipToRaster(scene, triangle, eyeFromWorld_, clipPlanes_, camera.projection, projected);
+  if (count < 3) return 0;
   // The clipped polygon is convex: a fan from its first corner covers it.
-  std::array<RasterVertex, 10> projected{};
-  for (size_t i = 0; i < clipped.count; ++i) {
-    projected[i] = ToRaster(ProjectToCell(camera.projection, clipped.corners[i]));
-  }
-  for (size_t i = 1; i + 1 < clipped.count; ++i) {
+  for (size_t i = 1; i + 1 < count; ++i) {
     Rasterize(projected[0], projected[i], projected[i + 1], faceNumber, rule, depth, cells);
   }
   return 1;
