@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/LoadThreads.h"
 #include "geometry/Scene.h"
 
 namespace termshade {
@@ -76,17 +77,22 @@ void FitCone(const Scene& scene, SceneCluster& c) {
 
 SceneClusters BuildClusters(const Scene& scene) {
   SceneClusters out;
+  constexpr size_t kRun = SceneClusters::kMaxTriangles;
   const size_t triangleCount = scene.triangles.size();
-  out.clusters.reserve(triangleCount / SceneClusters::kMaxTriangles + 1);
-  for (size_t t = 0; t < triangleCount; t += SceneClusters::kMaxTriangles) {
-    SceneCluster c;
-    c.firstTriangle = static_cast<uint32_t>(t);
-    c.triangleEnd =
-        static_cast<uint32_t>(std::min(triangleCount, t + SceneClusters::kMaxTriangles));
-    FitSphere(scene, c);
-    FitCone(scene, c);
-    out.clusters.push_back(c);
-  }
+  out.clusters.resize((triangleCount + kRun - 1) / kRun);
+  // Clusters are independent: contiguous ranges of them, one a load thread.
+  const size_t clusterCount = out.clusters.size();
+  const int threads = LoadThreadCount(triangleCount);
+  RunOnLoadThreads(threads, [&](int part) {
+    const size_t end = clusterCount * (part + 1) / threads;
+    for (size_t i = clusterCount * part / threads; i < end; ++i) {
+      SceneCluster& c = out.clusters[i];
+      c.firstTriangle = static_cast<uint32_t>(i * kRun);
+      c.triangleEnd = static_cast<uint32_t>(std::min(triangleCount, (i + 1) * kRun));
+      FitSphere(scene, c);
+      FitCone(scene, c);
+    }
+  });
   return out;
 }
 
