@@ -14,11 +14,13 @@
 #include <string>
 
 #include "geometry/Scene.h"
+#include "io/BinaryStlReader.h"
 #include "io/FileBytes.h"
 #include "io/FileBytesLoader.h"
 #include "io/FileMapGuard.h"
 #include "io/MeshExport.h"
 #include "io/ModelLoader.h"
+#include "io/ObjReader.h"
 #include "io/OwnReaders.h"
 #include "io/SceneGenerators.h"
 #include "support/TestSupport.h"
@@ -113,6 +115,37 @@ TEST(FileBytes, FileShrunkUnderTheMappingIsACleanError) {
                 std::string::npos)
           << mesh.Error().ToString();
     }
+  }
+}
+
+// The same on the load threads: a STL welded in 4 runs and an OBJ read in 4
+// chunks, cut so that the runs and chunks past the cut fault on threads the
+// reader started (a fault blocked there would end the process).
+TEST(FileBytes, FileShrunkUnderTheMappingOnLoadThreadsIsACleanError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const Mesh sphere = GenerateTriangleSphere(20'000);
+  const std::string stl = ExportMesh(sphere, ExportFormat::kStl);
+  const std::string obj = ExportMesh(sphere, ExportFormat::kObj);
+  {
+    const std::string path = folder.Write("cut_parts.stl", stl);
+    Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+    ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(stl.size() / 2)), 0);
+    FileBytes& file = mapped.Value();
+    [[maybe_unused]] Loaded<Mesh> read = ReadBinaryStlInParts(file.View(), path, 4, &file);
+    EXPECT_TRUE(file.Shrank());
+  }
+  {
+    // Cut past the last chunk's start: the chunk boundaries are found in the
+    // file's bytes, the lost pages first read by the last chunk's thread.
+    const std::string path = folder.Write("cut_chunks.obj", obj);
+    Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+    ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(obj.size() / 10 * 8)), 0);
+    FileBytes& file = mapped.Value();
+    [[maybe_unused]] std::optional<Loaded<Mesh>> read =
+        ReadObjInChunks(file.View(), path, size_t{1} << 30, 4, &file);
+    EXPECT_TRUE(file.Shrank());
   }
 }
 
