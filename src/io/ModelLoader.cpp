@@ -9,6 +9,8 @@
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <optional>
+#include <string_view>
 
 #include "geometry/HeapPolicy.h"
 #include "io/AssimpImport.h"
@@ -64,11 +66,15 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   const auto fail = [&](std::string message) {
     return LoadError{place.displayName, 0, 0, std::move(message)};
   };
-  // Step 1: counts in the header against the bytes that follow it.
-  if (format == "off" || format.empty()) {
-    if (auto problem = CheckHeaderCounts("off", bytes.View())) return fail(std::move(*problem));
-  }
-  if (auto problem = CheckHeaderCounts("ply", bytes.View())) return fail(std::move(*problem));
+  // Counts in the header against the bytes that follow it.
+  const auto headerProblem = [&](std::string_view read) -> std::optional<std::string> {
+    if (format == "off" || format.empty()) {
+      if (auto problem = CheckHeaderCounts("off", read)) return problem;
+    }
+    return CheckHeaderCounts("ply", read);
+  };
+  // Step 1: the header's counts, for our readers.
+  if (auto problem = headerProblem(bytes.View())) return fail(std::move(*problem));
   const auto overBudget = [&](size_t needed) { return needed > options.memoryBudgetBytes; };
   // Step 2: a dedicated reader where one takes the file, within its own
   // estimate, then the mesh's real size (file still held) against the budget.
@@ -107,8 +113,11 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
     const std::string base = place.canonical.empty() ? "/standard-input" : place.canonical;
     source.importName = format.empty() ? base : base + "." + format;
   }
+  // The importer reads a copy: a mapped file may have changed since step 1,
+  // so the header's counts are checked again on the bytes it gets.
   std::string text = bytes.TakeString();
   if (bytes.Shrank()) return ShrankError(place.displayName);
+  if (auto problem = headerProblem(text)) return fail(std::move(*problem));
   return ImportWithAssimp(source, std::move(text), options);
 }
 

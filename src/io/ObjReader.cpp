@@ -200,11 +200,18 @@ class ObjParser {
     return false;
   }
 
+  bool Changed(const termshade::Line& line) {
+    return Fail(line, 1, "the file changed while it was read");
+  }
+
   bool Vertex(const termshade::Line& line, LineCursor& cursor) {
     double xyz[3];
     for (double& coordinate : xyz) {
       if (!cursor.ReadDouble(coordinate)) return Fail(line, cursor.Column(), "expected a number");
     }
+    // The file is read twice (counts, then geometry) and may have changed
+    // in between: no write past what the first pass counted.
+    if (vertices_ >= chunk_.counts.vertices) return Changed(line);
     chunk_.vertices[vertices_++] = {xyz[0], xyz[1], xyz[2]};
     return true;
   }
@@ -221,8 +228,10 @@ class ObjParser {
                     "vertex " + std::to_string(index) + " is not defined (" +
                         std::to_string(defined) + " so far)");
       }
+      if (corners_ >= chunk_.counts.corners) return Changed(line);
       chunk_.corners[corners_++] = static_cast<uint32_t>(zeroBased);
     }
+    if (entries_ >= chunk_.counts.faces) return Changed(line);
     chunk_.entryEnds[entries_++] = static_cast<uint32_t>(corners_) | kind;
     return true;
   }
