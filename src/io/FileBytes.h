@@ -11,6 +11,12 @@
 
 namespace termshade {
 
+/// What a load of a file that changed while it was read says: its bytes
+/// differed between two reads, or its size or times from when it was opened.
+inline constexpr const char* kFileChangedMessage = "the file changed while it was read";
+/// What a load says when a mapped file's pages were lost (FileBytes::Shrank).
+inline constexpr const char* kFileShrankMessage = "the file changed (it shrank) while it was read";
+
 /// A model file's bytes: held in a string (standard input, tests), or mapped
 /// read-only from a regular file, so the load neither zeroes nor copies
 /// memory for them (on this kind of machine fresh memory costs about 1 ms a

@@ -58,7 +58,7 @@ Loaded<Mesh> LoadDat(std::string_view bytes, const ModelPlace& place, const Load
 // A mapped file that shrank while it was read gave zeros for its lost
 // pages: whatever was read from it is refused.
 LoadError ShrankError(const std::string& name) {
-  return LoadError{name, 0, 0, "the file changed (it shrank) while it was read"};
+  return LoadError{name, 0, 0, kFileShrankMessage};
 }
 
 Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const ModelPlace& place,
