@@ -2,7 +2,9 @@
 // read() and as Assimp, and a file that shrinks under its mapping gives a
 // clean error, never SIGBUS.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -149,6 +151,41 @@ TEST(FileBytes, FileShrunkUnderTheMappingOnLoadThreadsIsACleanError) {
     ASSERT_TRUE(read.has_value());
     EXPECT_FALSE(read->Ok());
   }
+}
+
+// Changes that raise no SIGBUS: the file cut inside its last page, and a
+// rewrite that keeps the size (its times change): the load is refused.
+TEST(FileBytes, FileChangedWithoutLosingAPageIsAnError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const Mesh sphere = GenerateTriangleSphere(20'000);
+  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+  for (const auto& [name, format] : {std::pair{"cut_in_page.stl", ExportFormat::kStl},
+                                     std::pair{"cut_in_page.obj", ExportFormat::kObj},
+                                     std::pair{"cut_in_page.ply", ExportFormat::kPly}}) {
+    const std::string bytes = ExportMesh(sphere, format);
+    constexpr size_t kCut = 10;
+    ASSERT_GT(bytes.size() % pageBytes, kCut) << name;  // the last page stays
+    const std::string path = folder.Write(name, bytes);
+    Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+    ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(bytes.size() - kCut)), 0);
+    Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
+    ASSERT_FALSE(mesh.Ok()) << name;
+    const std::string expected = std::string(name) + ": the file changed while it was read";
+    EXPECT_NE(mesh.Error().ToString().find(expected), std::string::npos)
+        << mesh.Error().ToString();
+  }
+  const std::string bytes = ExportMesh(sphere, ExportFormat::kStl);
+  const std::string path = folder.Write("rewritten.stl", bytes);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+  const timespec older[2] = {{1'000'000'000, 0}, {1'000'000'000, 0}};
+  ASSERT_EQ(utimensat(AT_FDCWD, path.c_str(), older, 0), 0);
+  Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
+  ASSERT_FALSE(mesh.Ok());
+  EXPECT_NE(mesh.Error().ToString().find("rewritten.stl: the file changed while it was read"),
+            std::string::npos)
+      << mesh.Error().ToString();
 }
 
 // An OBJ whose first page reads differently in the two passes (the page,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <sys/stat.h>
+
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -23,7 +25,10 @@ inline constexpr const char* kFileShrankMessage = "the file changed (it shrank) 
 /// MB to fault in, the page cache's pages a tenth of that).
 /// A mapped file that shrinks while it is read would raise SIGBUS at the
 /// pages past its new end; a guard (FileMapGuard.h) maps zeros there instead
-/// and marks the bytes Shrank(), which the loader turns into an error.
+/// and marks the bytes Shrank(), which the loader turns into an error. The
+/// file stays open while mapped: ChangedSinceOpened() compares its size,
+/// times, inode and device with those it had when it was opened (a change
+/// inside the last page, or a rewrite, raises no SIGBUS).
 class FileBytes {
  public:
   FileBytes() = default;
@@ -57,13 +62,21 @@ class FileBytes {
   /// A mapped file was found shorter than when it was mapped: some bytes
   /// read were zeros, not the file's.
   bool Shrank() const;
+  /// A mapped file's size, modification or change time, inode or device
+  /// differ from when it was opened (now, or when it was freed).
+  bool ChangedSinceOpened() const;
 
  private:
+  bool StatChanged() const;
+
   std::string text_;
   const char* mapped_ = nullptr;
   size_t mappedBytes_ = 0;
   int guardSlot_ = -1;
+  int fd_ = -1;
+  struct stat opened_ {};
   bool shrank_ = false;
+  bool changed_ = false;
 };
 
 }  // namespace termshade

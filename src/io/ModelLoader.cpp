@@ -56,9 +56,12 @@ Loaded<Mesh> LoadDat(std::string_view bytes, const ModelPlace& place, const Load
 }
 
 // A mapped file that shrank while it was read gave zeros for its lost
-// pages: whatever was read from it is refused.
-LoadError ShrankError(const std::string& name) {
-  return LoadError{name, 0, 0, kFileShrankMessage};
+// pages, one that changed otherwise a mix of old and new bytes: whatever
+// was read from it is refused.
+std::optional<LoadError> ChangedError(const FileBytes& bytes, const std::string& name) {
+  if (bytes.Shrank()) return LoadError{name, 0, 0, kFileShrankMessage};
+  if (bytes.ChangedSinceOpened()) return LoadError{name, 0, 0, kFileChangedMessage};
+  return std::nullopt;
 }
 
 Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const ModelPlace& place,
@@ -87,7 +90,7 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
     if (fileBytes >= kBigFileBytes) AdviseHugePagesForLoad(*ownNeeds);
     if (auto mesh = ReadWithOwnReader(bytes.View(), format, place.displayName,
                                       options.memoryBudgetBytes, &bytes)) {
-      if (bytes.Shrank()) return ShrankError(place.displayName);
+      if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
       if (!mesh->Ok()) return std::move(*mesh);
       const Mesh& read = mesh->Value();
       const size_t needed =
@@ -116,16 +119,16 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   // The importer reads a copy: a mapped file may have changed since step 1,
   // so the header's counts are checked again on the bytes it gets.
   std::string text = bytes.TakeString();
-  if (bytes.Shrank()) return ShrankError(place.displayName);
+  if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
   if (auto problem = headerProblem(text)) return fail(std::move(*problem));
   return ImportWithAssimp(source, std::move(text), options);
 }
 
-// A .dat read from a mapping is checked for a shrunk file after the parse.
+// A .dat read from a mapping is checked for a changed file after the parse.
 Loaded<Mesh> LoadDatBytes(const FileBytes& bytes, const ModelPlace& place,
                           const LoadOptions& options) {
   Loaded<Mesh> mesh = LoadDat(bytes.View(), place, options);
-  if (bytes.Shrank()) return ShrankError(place.displayName);
+  if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
   return mesh;
 }
 
