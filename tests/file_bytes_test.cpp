@@ -232,5 +232,29 @@ TEST(FileBytesDeathTest, ForeignBusErrorsStillEndTheProcess) {
       "");
 }
 
+// A SIGBUS sent to the process (kill, raise), not a fault, is no watched
+// page's: with the default action before the guard, it still ends the
+// process; ignored before the guard, it stays ignored and the guard stays.
+TEST(FileBytesDeathTest, SentBusErrorsKeepThePreviousAction) {
+  EXPECT_DEATH(
+      {
+        signal(SIGBUS, SIG_DFL);
+        StopWatchingMappedRange(WatchMappedRange(nullptr, 0));  // installs the guard
+        raise(SIGBUS);
+        std::exit(0);
+      },
+      "");
+  EXPECT_EXIT(
+      {
+        signal(SIGBUS, SIG_IGN);
+        StopWatchingMappedRange(WatchMappedRange(nullptr, 0));
+        raise(SIGBUS);
+        struct sigaction after {};
+        sigaction(SIGBUS, nullptr, &after);
+        std::exit(after.sa_handler == SIG_DFL ? 1 : 0);
+      },
+      testing::ExitedWithCode(0), "");
+}
+
 }  // namespace
 }  // namespace termshade
