@@ -16,8 +16,10 @@ namespace termshade {
 /// What a load of a file that changed while it was read says: its bytes
 /// differed between two reads, or its size or times from when it was opened.
 inline constexpr const char* kFileChangedMessage = "the file changed while it was read";
-/// What a load says when a mapped file's pages were lost (FileBytes::Shrank).
-inline constexpr const char* kFileShrankMessage = "the file changed (it shrank) while it was read";
+/// What a load says when pages of a mapped file could not be read
+/// (FileBytes::Shrank): the file shrank, or reading them failed (EIO).
+inline constexpr const char* kFilePagesLostMessage =
+    "the file changed while it was read, or a part of it could not be read";
 
 /// A model file's bytes: held in a string (standard input, tests), or mapped
 /// read-only from a regular file, so the load neither zeroes nor copies
@@ -59,8 +61,8 @@ class FileBytes {
   void Free();
   /// The bytes in a string (a mapping is copied, then freed), for the importer.
   std::string TakeString();
-  /// A mapped file was found shorter than when it was mapped: some bytes
-  /// read were zeros, not the file's.
+  /// Pages of a mapped file could not be read (it shrank, or an I/O error):
+  /// some bytes read were zeros, not the file's.
   bool Shrank() const;
   /// A mapped file's size, modification or change time, inode or device
   /// differ from when it was opened (now, or when it was freed).

@@ -59,7 +59,7 @@ Loaded<Mesh> LoadDat(std::string_view bytes, const ModelPlace& place, const Load
 // pages, one that changed otherwise a mix of old and new bytes: whatever
 // was read from it is refused.
 std::optional<LoadError> ChangedError(const FileBytes& bytes, const std::string& name) {
-  if (bytes.Shrank()) return LoadError{name, 0, 0, kFileShrankMessage};
+  if (bytes.Shrank()) return LoadError{name, 0, 0, kFilePagesLostMessage};
   if (bytes.ChangedSinceOpened()) return LoadError{name, 0, 0, kFileChangedMessage};
   return std::nullopt;
 }

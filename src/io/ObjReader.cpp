@@ -333,7 +333,7 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
     chunk.counts = CountObj(chunk.text, release);
   });
   if (owned != nullptr && owned->Shrank())
-    return Loaded<Mesh>(ChangedError(path, kFileShrankMessage));
+    return Loaded<Mesh>(ChangedError(path, kFilePagesLostMessage));
   ObjCounts counts;
   for (ObjChunk& chunk : chunks) {
     if (chunk.counts.needsImporter) return std::nullopt;
@@ -387,7 +387,7 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
     parser.Finish();
   });
   if (owned != nullptr && owned->Shrank())
-    return Loaded<Mesh>(ChangedError(path, kFileShrankMessage));
+    return Loaded<Mesh>(ChangedError(path, kFilePagesLostMessage));
   for (const ObjChunk& chunk : chunks) {
     if (chunk.error) return Loaded<Mesh>(*chunk.error);
     // Fewer lines than the counts: the file changed between the passes.
