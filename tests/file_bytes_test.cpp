@@ -214,6 +214,29 @@ TEST(FileBytes, ObjThatLosesAFaceBetweenThePassesIsAnError) {
       << read->Error().ToString();
 }
 
+// The other way round: the first pass reads a comment where the file has a
+// vertex, so the geometry pass finds one vertex more than was counted: the
+// write past the counts is refused at its line, never made.
+TEST(FileBytes, ObjThatGainsAVertexBetweenThePassesIsAnError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const std::string body = ExportMesh(GenerateTriangleSphere(300'000), ExportFormat::kObj);
+  const std::string path = folder.Write("gained.obj", "v 0 0 0\n" + body);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+  FileBytes& file = mapped.Value();
+  void* firstPage = const_cast<char*>(file.View().data());
+  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ | PROT_WRITE), 0);
+  std::memcpy(firstPage, "#", 1);
+  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ), 0);
+  std::optional<Loaded<Mesh>> read = ReadObjInChunks(file.View(), path, size_t{1} << 30, 1, &file);
+  ASSERT_TRUE(read.has_value());
+  ASSERT_FALSE(read->Ok());
+  const std::string message = read->Error().ToString();
+  EXPECT_NE(message.find("gained.obj:"), std::string::npos) << message;
+  EXPECT_NE(message.find(":1: the file changed while it was read"), std::string::npos) << message;
+}
+
 // A SIGBUS outside every watched mapping still ends the process (by the
 // signal, or by the handler that was there before, such as a sanitizer's).
 TEST(FileBytesDeathTest, ForeignBusErrorsStillEndTheProcess) {
