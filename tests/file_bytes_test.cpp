@@ -2,7 +2,9 @@
 // read() and as Assimp, and a file that shrinks under its mapping gives a
 // clean error, never SIGBUS.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -14,11 +16,13 @@
 #include <string>
 
 #include "geometry/Scene.h"
+#include "io/BinaryStlReader.h"
 #include "io/FileBytes.h"
 #include "io/FileBytesLoader.h"
 #include "io/FileMapGuard.h"
 #include "io/MeshExport.h"
 #include "io/ModelLoader.h"
+#include "io/ObjReader.h"
 #include "io/OwnReaders.h"
 #include "io/SceneGenerators.h"
 #include "support/TestSupport.h"
@@ -109,11 +113,128 @@ TEST(FileBytes, FileShrunkUnderTheMappingIsACleanError) {
     } else {
       Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
       ASSERT_FALSE(mesh.Ok());
-      EXPECT_NE(mesh.Error().ToString().find("cut_loader.stl: the file changed (it shrank) while it was read"),
+      EXPECT_NE(mesh.Error().ToString().find("cut_loader.stl: the file changed while it was "
+                                             "read, or a part of it could not be read"),
                 std::string::npos)
           << mesh.Error().ToString();
     }
   }
+}
+
+// The same on the load threads: a STL welded in 4 runs and an OBJ read in 4
+// chunks, cut so that the runs and chunks past the cut fault on threads the
+// reader started (a fault blocked there would end the process).
+TEST(FileBytes, FileShrunkUnderTheMappingOnLoadThreadsIsACleanError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const Mesh sphere = GenerateTriangleSphere(20'000);
+  const std::string stl = ExportMesh(sphere, ExportFormat::kStl);
+  const std::string obj = ExportMesh(sphere, ExportFormat::kObj);
+  {
+    const std::string path = folder.Write("cut_parts.stl", stl);
+    Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+    ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(stl.size() / 2)), 0);
+    FileBytes& file = mapped.Value();
+    [[maybe_unused]] Loaded<Mesh> read = ReadBinaryStlInParts(file.View(), path, 4, &file);
+    EXPECT_TRUE(file.Shrank());
+  }
+  {
+    // Cut past the last chunk's start: the chunk boundaries are found in the
+    // file's bytes, the lost pages first read by the last chunk's thread.
+    const std::string path = folder.Write("cut_chunks.obj", obj);
+    Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+    ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(obj.size() / 10 * 8)), 0);
+    FileBytes& file = mapped.Value();
+    std::optional<Loaded<Mesh>> read =
+        ReadObjInChunks(file.View(), path, size_t{1} << 30, 4, &file);
+    EXPECT_TRUE(file.Shrank());
+    ASSERT_TRUE(read.has_value());
+    EXPECT_FALSE(read->Ok());
+  }
+}
+
+// Changes that raise no SIGBUS: the file cut inside its last page, and a
+// rewrite that keeps the size (its times change): the load is refused.
+TEST(FileBytes, FileChangedWithoutLosingAPageIsAnError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const Mesh sphere = GenerateTriangleSphere(20'000);
+  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+  for (const auto& [name, format] : {std::pair{"cut_in_page.stl", ExportFormat::kStl},
+                                     std::pair{"cut_in_page.obj", ExportFormat::kObj},
+                                     std::pair{"cut_in_page.ply", ExportFormat::kPly}}) {
+    const std::string bytes = ExportMesh(sphere, format);
+    constexpr size_t kCut = 10;
+    ASSERT_GT(bytes.size() % pageBytes, kCut) << name;  // the last page stays
+    const std::string path = folder.Write(name, bytes);
+    Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+    ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+    ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(bytes.size() - kCut)), 0);
+    Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
+    ASSERT_FALSE(mesh.Ok()) << name;
+    const std::string expected = std::string(name) + ": the file changed while it was read";
+    EXPECT_NE(mesh.Error().ToString().find(expected), std::string::npos)
+        << mesh.Error().ToString();
+  }
+  const std::string bytes = ExportMesh(sphere, ExportFormat::kStl);
+  const std::string path = folder.Write("rewritten.stl", bytes);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+  const timespec older[2] = {{1'000'000'000, 0}, {1'000'000'000, 0}};
+  ASSERT_EQ(utimensat(AT_FDCWD, path.c_str(), older, 0), 0);
+  Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
+  ASSERT_FALSE(mesh.Ok());
+  EXPECT_NE(mesh.Error().ToString().find("rewritten.stl: the file changed while it was read"),
+            std::string::npos)
+      << mesh.Error().ToString();
+}
+
+// An OBJ whose first page reads differently in the two passes (the page,
+// written to in the private mapping, holds an extra face line for the counts;
+// the counting pass hands it back, so the geometry pass reads the file's
+// comment there): fewer entries than counted are an error, never merged.
+TEST(FileBytes, ObjThatLosesAFaceBetweenThePassesIsAnError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const std::string body = ExportMesh(GenerateTriangleSphere(300'000), ExportFormat::kObj);
+  ASSERT_GT(body.size(), size_t{5} << 20);  // past the first pass's 4 MiB hand-back
+  const std::string path = folder.Write("changed.obj", "#" + std::string(15, ' ') + "\n" + body);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+  FileBytes& file = mapped.Value();
+  void* firstPage = const_cast<char*>(file.View().data());
+  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ | PROT_WRITE), 0);
+  std::memcpy(firstPage, "f 1 2 3", 7);
+  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ), 0);
+  std::optional<Loaded<Mesh>> read = ReadObjInChunks(file.View(), path, size_t{1} << 30, 1, &file);
+  ASSERT_TRUE(read.has_value());
+  ASSERT_FALSE(read->Ok());
+  EXPECT_NE(read->Error().ToString().find("changed.obj: the file changed while it was read"),
+            std::string::npos)
+      << read->Error().ToString();
+}
+
+// The other way round: the first pass reads a comment where the file has a
+// vertex, so the geometry pass finds one vertex more than was counted: the
+// write past the counts is refused at its line, never made.
+TEST(FileBytes, ObjThatGainsAVertexBetweenThePassesIsAnError) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const std::string body = ExportMesh(GenerateTriangleSphere(300'000), ExportFormat::kObj);
+  const std::string path = folder.Write("gained.obj", "v 0 0 0\n" + body);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+  FileBytes& file = mapped.Value();
+  void* firstPage = const_cast<char*>(file.View().data());
+  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ | PROT_WRITE), 0);
+  std::memcpy(firstPage, "#", 1);
+  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ), 0);
+  std::optional<Loaded<Mesh>> read = ReadObjInChunks(file.View(), path, size_t{1} << 30, 1, &file);
+  ASSERT_TRUE(read.has_value());
+  ASSERT_FALSE(read->Ok());
+  const std::string message = read->Error().ToString();
+  EXPECT_NE(message.find("gained.obj:"), std::string::npos) << message;
+  EXPECT_NE(message.find(":1: the file changed while it was read"), std::string::npos) << message;
 }
 
 // A SIGBUS outside every watched mapping still ends the process (by the
@@ -133,6 +254,30 @@ TEST(FileBytesDeathTest, ForeignBusErrorsStillEndTheProcess) {
         std::exit(0);
       },
       "");
+}
+
+// A SIGBUS sent to the process (kill, raise), not a fault, is no watched
+// page's: with the default action before the guard, it still ends the
+// process; ignored before the guard, it stays ignored and the guard stays.
+TEST(FileBytesDeathTest, SentBusErrorsKeepThePreviousAction) {
+  EXPECT_DEATH(
+      {
+        signal(SIGBUS, SIG_DFL);
+        StopWatchingMappedRange(WatchMappedRange(nullptr, 0));  // installs the guard
+        raise(SIGBUS);
+        std::exit(0);
+      },
+      "");
+  EXPECT_EXIT(
+      {
+        signal(SIGBUS, SIG_IGN);
+        StopWatchingMappedRange(WatchMappedRange(nullptr, 0));
+        raise(SIGBUS);
+        struct sigaction after {};
+        sigaction(SIGBUS, nullptr, &after);
+        std::exit(after.sa_handler == SIG_DFL ? 1 : 0);
+      },
+      testing::ExitedWithCode(0), "");
 }
 
 }  // namespace

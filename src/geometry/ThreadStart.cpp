@@ -21,9 +21,13 @@ QuietThreadStart::QuietThreadStart() {
 #if defined(__GLIBC__)
   mallopt(M_ARENA_MAX, 1);
 #endif
-  sigset_t all;
-  sigfillset(&all);
-  pthread_sigmask(SIG_SETMASK, &all, &previousMask_);
+  // Every signal but the synchronous ones: a fault that is blocked is forced
+  // to its default action (the mapped-file guard's SIGBUS handler would
+  // never run on a load thread).
+  sigset_t quiet;
+  sigfillset(&quiet);
+  for (const int fault : {SIGBUS, SIGSEGV, SIGFPE, SIGILL, SIGTRAP}) sigdelset(&quiet, fault);
+  pthread_sigmask(SIG_SETMASK, &quiet, &previousMask_);
 }
 
 QuietThreadStart::~QuietThreadStart() {

@@ -9,8 +9,10 @@ namespace termshade {
 /// (tests/models/corpus_check.sh).
 int UsableCores();
 
-/// While alive, threads started by this thread take no signals (the viewer's
-/// SIGWINCH and SIGINT stay with the thread that waits for input), and every
+/// While alive, threads started by this thread take no signals but the
+/// synchronous faults (SIGBUS, SIGSEGV, SIGFPE, SIGILL, SIGTRAP, which go to
+/// the thread that raised them; the viewer's SIGWINCH and SIGINT stay with
+/// the thread that waits for input), and every
 /// thread shares one malloc arena: a thread's own arena, once it shrinks,
 /// makes glibc read /proc/sys/vm/overcommit_memory, another file outside the
 /// model's folder.

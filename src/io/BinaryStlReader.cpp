@@ -75,12 +75,16 @@ struct WeldPart {
     constexpr size_t kBatch = 32;
     constexpr size_t kReleaseBytes = size_t{4} << 20;
     uint64_t hashes[kBatch];
+    // Each key copied out of the file once: a mapped file may change under
+    // the reader, and the key hashed must be the key stored.
+    char batchKeys[kBatch][kKeyBytes];
     const size_t begin = 3 * firstTriangle, end = 3 * endTriangle;
     size_t released = kFirstRecord + firstTriangle * kRecordBytes;
     for (size_t batch = begin; batch < end; batch += kBatch) {
       const size_t batchEnd = std::min(end, batch + kBatch);
       for (size_t i = batch; i < batchEnd; ++i) {
-        hashes[i - batch] = table->Hash(cornerAt(i));
+        std::memcpy(batchKeys[i - batch], cornerAt(i), kKeyBytes);
+        hashes[i - batch] = table->Hash(batchKeys[i - batch]);
         table->PrefetchSlot(hashes[i - batch]);
       }
       for (size_t i = batch; i < batchEnd; ++i) {
@@ -88,7 +92,7 @@ struct WeldPart {
         if (held != KeyTable::kEmpty) __builtin_prefetch(KeyAt(held));
       }
       for (size_t i = batch; i < batchEnd; ++i) {
-        corners[i] = InsertHashed(cornerAt(i), hashes[i - batch]);
+        corners[i] = InsertHashed(batchKeys[i - batch], hashes[i - batch]);
       }
       const size_t readTo = kFirstRecord + (batchEnd / 3) * kRecordBytes;
       if (owned != nullptr && readTo >= released + kReleaseBytes) {
@@ -107,28 +111,21 @@ struct WeldPart {
   }
 };
 
-}  // namespace
-
-bool IsBinaryStlLayout(std::string_view bytes) {
-  if (bytes.size() < kFirstRecord) return false;
-  return kFirstRecord + uint64_t{TriangleCount(bytes)} * kRecordBytes == bytes.size();
+// The triangle count, read once, when the bytes have the layout it gives.
+std::optional<uint32_t> LaidOutTriangleCount(std::string_view bytes) {
+  if (bytes.size() < kFirstRecord) return std::nullopt;
+  const uint32_t count = TriangleCount(bytes);
+  if (kFirstRecord + uint64_t{count} * kRecordBytes != bytes.size()) return std::nullopt;
+  return count;
 }
 
-bool BinaryStlHasColours(std::string_view bytes) {
-  return bytes.substr(0, kHeaderBytes).find("COLOR=") != std::string_view::npos;
+LoadError NotBinaryStlError(const std::string& path) {
+  return LoadError{path, 0, 0, "not a binary STL (size is not 84 + 50 x triangle count)"};
 }
 
-Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, FileBytes* owned) {
-  const size_t corners = IsBinaryStlLayout(bytes) ? 3 * size_t{TriangleCount(bytes)} : 0;
-  return ReadBinaryStlInParts(bytes, path, static_cast<size_t>(LoadThreadCount(corners)), owned);
-}
-
-Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path,
-                                  size_t partCount, FileBytes* owned) {
-  if (!IsBinaryStlLayout(bytes)) {
-    return LoadError{path, 0, 0, "not a binary STL (size is not 84 + 50 x triangle count)"};
-  }
-  const size_t triangles = TriangleCount(bytes);
+// ReadBinaryStlInParts with the triangle count its layout was checked with.
+Loaded<Mesh> ReadLaidOut(std::string_view bytes, const std::string& path, size_t triangles,
+                         size_t partCount, FileBytes* owned) {
   if (triangles == 0) return LoadError{path, 0, 0, "the file holds no triangles"};
   if (triangles >= UINT32_MAX / 3)
     return LoadError{path, 0, 0, "more triangles than 32-bit indices hold"};
@@ -192,6 +189,30 @@ Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& pat
   for (size_t t = 0; t <= triangles; ++t) mesh.faceStarts[t] = static_cast<uint32_t>(t * 3);
   mesh.edgeHidden.assign(mesh.faceCorners.size(), 0);
   return mesh;
+}
+
+}  // namespace
+
+bool IsBinaryStlLayout(std::string_view bytes) {
+  return LaidOutTriangleCount(bytes).has_value();
+}
+
+bool BinaryStlHasColours(std::string_view bytes) {
+  return bytes.substr(0, kHeaderBytes).find("COLOR=") != std::string_view::npos;
+}
+
+Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, FileBytes* owned) {
+  const std::optional<uint32_t> triangles = LaidOutTriangleCount(bytes);
+  if (!triangles) return NotBinaryStlError(path);
+  const auto parts = static_cast<size_t>(LoadThreadCount(3 * size_t{*triangles}));
+  return ReadLaidOut(bytes, path, *triangles, parts, owned);
+}
+
+Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path,
+                                  size_t partCount, FileBytes* owned) {
+  const std::optional<uint32_t> triangles = LaidOutTriangleCount(bytes);
+  if (!triangles) return NotBinaryStlError(path);
+  return ReadLaidOut(bytes, path, *triangles, partCount, owned);
 }
 
 }  // namespace termshade

@@ -20,10 +20,14 @@ FileBytes::FileBytes(FileBytes&& other) noexcept
       mapped_(other.mapped_),
       mappedBytes_(other.mappedBytes_),
       guardSlot_(other.guardSlot_),
-      shrank_(other.shrank_) {
+      fd_(other.fd_),
+      opened_(other.opened_),
+      shrank_(other.shrank_),
+      changed_(other.changed_) {
   other.mapped_ = nullptr;
   other.mappedBytes_ = 0;
   other.guardSlot_ = -1;
+  other.fd_ = -1;
 }
 
 FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
@@ -33,10 +37,14 @@ FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
   mapped_ = other.mapped_;
   mappedBytes_ = other.mappedBytes_;
   guardSlot_ = other.guardSlot_;
+  fd_ = other.fd_;
+  opened_ = other.opened_;
   shrank_ = other.shrank_;
+  changed_ = other.changed_;
   other.mapped_ = nullptr;
   other.mappedBytes_ = 0;
   other.guardSlot_ = -1;
+  other.fd_ = -1;
   return *this;
 }
 
@@ -53,7 +61,8 @@ Loaded<FileBytes> FileBytes::MapRegularFile(
   if (mappable && !refuseSize(static_cast<size_t>(info.st_size))) {
     mapped = mmap(nullptr, static_cast<size_t>(info.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
   }
-  close(fd);
+  // A mapped file stays open, to be compared with info when it is freed.
+  if (mapped == MAP_FAILED) close(fd);
   // Step 2: anything not mapped (refused, empty, not regular, no mapping or
   // no watch slot) is read instead, which gives the message where one is due.
   const auto readInstead = [&]() -> Loaded<FileBytes> {
@@ -66,6 +75,7 @@ Loaded<FileBytes> FileBytes::MapRegularFile(
   const int slot = WatchMappedRange(mapped, size);
   if (slot < 0) {
     munmap(mapped, size);
+    close(fd);
     return readInstead();
   }
   // Read ahead now where the file is not cached yet.
@@ -74,11 +84,14 @@ Loaded<FileBytes> FileBytes::MapRegularFile(
   if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
     StopWatchingMappedRange(slot);
     munmap(mapped, size);
+    close(fd);
     return LoadError{path, 0, 0, "loading cancelled"};
   }
   bytes.mapped_ = static_cast<const char*>(mapped);
   bytes.mappedBytes_ = size;
   bytes.guardSlot_ = slot;
+  bytes.fd_ = fd;
+  bytes.opened_ = info;
   return bytes;
 }
 
@@ -104,12 +117,16 @@ void FileBytes::Release(size_t begin, size_t end) {
 
 void FileBytes::Free() {
   if (mapped_ != nullptr) {
+    // Everything read from the mapping was read before this.
+    changed_ = changed_ || StatChanged();
     shrank_ = StopWatchingMappedRange(guardSlot_) || shrank_;
     munmap(const_cast<char*>(mapped_), mappedBytes_);
     mapped_ = nullptr;
     mappedBytes_ = 0;
     guardSlot_ = -1;
   }
+  if (fd_ >= 0) close(fd_);
+  fd_ = -1;
   FreeAndReleasePages(text_);
 }
 
@@ -122,6 +139,21 @@ std::string FileBytes::TakeString() {
 
 bool FileBytes::Shrank() const {
   return shrank_ || (mapped_ != nullptr && MappedRangeShrank(guardSlot_));
+}
+
+bool FileBytes::ChangedSinceOpened() const {
+  return changed_ || (mapped_ != nullptr && StatChanged());
+}
+
+bool FileBytes::StatChanged() const {
+  if (fd_ < 0) return false;
+  struct stat now {};
+  if (fstat(fd_, &now) != 0) return true;
+  return now.st_size != opened_.st_size || now.st_ino != opened_.st_ino ||
+         now.st_dev != opened_.st_dev || now.st_mtim.tv_sec != opened_.st_mtim.tv_sec ||
+         now.st_mtim.tv_nsec != opened_.st_mtim.tv_nsec ||
+         now.st_ctim.tv_sec != opened_.st_ctim.tv_sec ||
+         now.st_ctim.tv_nsec != opened_.st_ctim.tv_nsec;
 }
 
 }  // namespace termshade

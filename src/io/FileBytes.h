@@ -1,5 +1,7 @@
 #pragma once
 
+#include <sys/stat.h>
+
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -11,13 +13,24 @@
 
 namespace termshade {
 
+/// What a load of a file that changed while it was read says: its bytes
+/// differed between two reads, or its size or times from when it was opened.
+inline constexpr const char* kFileChangedMessage = "the file changed while it was read";
+/// What a load says when pages of a mapped file could not be read
+/// (FileBytes::Shrank): the file shrank, or reading them failed (EIO).
+inline constexpr const char* kFilePagesLostMessage =
+    "the file changed while it was read, or a part of it could not be read";
+
 /// A model file's bytes: held in a string (standard input, tests), or mapped
 /// read-only from a regular file, so the load neither zeroes nor copies
 /// memory for them (on this kind of machine fresh memory costs about 1 ms a
 /// MB to fault in, the page cache's pages a tenth of that).
 /// A mapped file that shrinks while it is read would raise SIGBUS at the
 /// pages past its new end; a guard (FileMapGuard.h) maps zeros there instead
-/// and marks the bytes Shrank(), which the loader turns into an error.
+/// and marks the bytes Shrank(), which the loader turns into an error. The
+/// file stays open while mapped: ChangedSinceOpened() compares its size,
+/// times, inode and device with those it had when it was opened (a change
+/// inside the last page, or a rewrite, raises no SIGBUS).
 class FileBytes {
  public:
   FileBytes() = default;
@@ -48,16 +61,24 @@ class FileBytes {
   void Free();
   /// The bytes in a string (a mapping is copied, then freed), for the importer.
   std::string TakeString();
-  /// A mapped file was found shorter than when it was mapped: some bytes
-  /// read were zeros, not the file's.
+  /// Pages of a mapped file could not be read (it shrank, or an I/O error):
+  /// some bytes read were zeros, not the file's.
   bool Shrank() const;
+  /// A mapped file's size, modification or change time, inode or device
+  /// differ from when it was opened (now, or when it was freed).
+  bool ChangedSinceOpened() const;
 
  private:
+  bool StatChanged() const;
+
   std::string text_;
   const char* mapped_ = nullptr;
   size_t mappedBytes_ = 0;
   int guardSlot_ = -1;
+  int fd_ = -1;
+  struct stat opened_ {};
   bool shrank_ = false;
+  bool changed_ = false;
 };
 
 }  // namespace termshade

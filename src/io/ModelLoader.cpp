@@ -9,6 +9,8 @@
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <optional>
+#include <string_view>
 
 #include "geometry/HeapPolicy.h"
 #include "io/AssimpImport.h"
@@ -54,9 +56,12 @@ Loaded<Mesh> LoadDat(std::string_view bytes, const ModelPlace& place, const Load
 }
 
 // A mapped file that shrank while it was read gave zeros for its lost
-// pages: whatever was read from it is refused.
-LoadError ShrankError(const std::string& name) {
-  return LoadError{name, 0, 0, "the file changed (it shrank) while it was read"};
+// pages, one that changed otherwise a mix of old and new bytes: whatever
+// was read from it is refused.
+std::optional<LoadError> ChangedError(const FileBytes& bytes, const std::string& name) {
+  if (bytes.Shrank()) return LoadError{name, 0, 0, kFilePagesLostMessage};
+  if (bytes.ChangedSinceOpened()) return LoadError{name, 0, 0, kFileChangedMessage};
+  return std::nullopt;
 }
 
 Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const ModelPlace& place,
@@ -64,11 +69,15 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   const auto fail = [&](std::string message) {
     return LoadError{place.displayName, 0, 0, std::move(message)};
   };
-  // Step 1: counts in the header against the bytes that follow it.
-  if (format == "off" || format.empty()) {
-    if (auto problem = CheckHeaderCounts("off", bytes.View())) return fail(std::move(*problem));
-  }
-  if (auto problem = CheckHeaderCounts("ply", bytes.View())) return fail(std::move(*problem));
+  // Counts in the header against the bytes that follow it.
+  const auto headerProblem = [&](std::string_view read) -> std::optional<std::string> {
+    if (format == "off" || format.empty()) {
+      if (auto problem = CheckHeaderCounts("off", read)) return problem;
+    }
+    return CheckHeaderCounts("ply", read);
+  };
+  // Step 1: the header's counts, for our readers.
+  if (auto problem = headerProblem(bytes.View())) return fail(std::move(*problem));
   const auto overBudget = [&](size_t needed) { return needed > options.memoryBudgetBytes; };
   // Step 2: a dedicated reader where one takes the file, within its own
   // estimate, then the mesh's real size (file still held) against the budget.
@@ -81,7 +90,7 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
     if (fileBytes >= kBigFileBytes) AdviseHugePagesForLoad(*ownNeeds);
     if (auto mesh = ReadWithOwnReader(bytes.View(), format, place.displayName,
                                       options.memoryBudgetBytes, &bytes)) {
-      if (bytes.Shrank()) return ShrankError(place.displayName);
+      if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
       if (!mesh->Ok()) return std::move(*mesh);
       const Mesh& read = mesh->Value();
       const size_t needed =
@@ -107,16 +116,19 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
     const std::string base = place.canonical.empty() ? "/standard-input" : place.canonical;
     source.importName = format.empty() ? base : base + "." + format;
   }
+  // The importer reads a copy: a mapped file may have changed since step 1,
+  // so the header's counts are checked again on the bytes it gets.
   std::string text = bytes.TakeString();
-  if (bytes.Shrank()) return ShrankError(place.displayName);
+  if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
+  if (auto problem = headerProblem(text)) return fail(std::move(*problem));
   return ImportWithAssimp(source, std::move(text), options);
 }
 
-// A .dat read from a mapping is checked for a shrunk file after the parse.
+// A .dat read from a mapping is checked for a changed file after the parse.
 Loaded<Mesh> LoadDatBytes(const FileBytes& bytes, const ModelPlace& place,
                           const LoadOptions& options) {
   Loaded<Mesh> mesh = LoadDat(bytes.View(), place, options);
-  if (bytes.Shrank()) return ShrankError(place.displayName);
+  if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
   return mesh;
 }
 

@@ -175,6 +175,9 @@ struct ObjChunk {
   uint32_t* corners = nullptr;
   uint32_t* entryEnds = nullptr;
   std::optional<LoadError> error;
+  /// What the geometry pass wrote: the file may have changed since the counts.
+  uint64_t verticesWritten = 0;
+  uint64_t entriesWritten = 0;
 };
 
 constexpr uint32_t kLineEntry = uint32_t{1} << 31;
@@ -193,6 +196,12 @@ class ObjParser {
     return true;  // vt, vn, g, o, s, comments and the rest: not geometry we draw
   }
 
+  /// Records in the chunk what the lines read so far wrote.
+  void Finish() {
+    chunk_.verticesWritten = vertices_;
+    chunk_.entriesWritten = entries_;
+  }
+
  private:
   bool Fail(const termshade::Line& line, int column, std::string message) {
     chunk_.error = LoadError{path_, static_cast<int>(chunk_.firstLine) + line.number, column,
@@ -200,11 +209,16 @@ class ObjParser {
     return false;
   }
 
+  bool Changed(const termshade::Line& line) { return Fail(line, 1, kFileChangedMessage); }
+
   bool Vertex(const termshade::Line& line, LineCursor& cursor) {
     double xyz[3];
     for (double& coordinate : xyz) {
       if (!cursor.ReadDouble(coordinate)) return Fail(line, cursor.Column(), "expected a number");
     }
+    // The file is read twice (counts, then geometry) and may have changed
+    // in between: no write past what the first pass counted.
+    if (vertices_ >= chunk_.counts.vertices) return Changed(line);
     chunk_.vertices[vertices_++] = {xyz[0], xyz[1], xyz[2]};
     return true;
   }
@@ -221,8 +235,10 @@ class ObjParser {
                     "vertex " + std::to_string(index) + " is not defined (" +
                         std::to_string(defined) + " so far)");
       }
+      if (corners_ >= chunk_.counts.corners) return Changed(line);
       chunk_.corners[corners_++] = static_cast<uint32_t>(zeroBased);
     }
+    if (entries_ >= chunk_.counts.faces) return Changed(line);
     chunk_.entryEnds[entries_++] = static_cast<uint32_t>(corners_) | kind;
     return true;
   }
@@ -254,13 +270,14 @@ std::vector<std::string_view> SplitAtLines(std::string_view text, size_t parts) 
 /// corners) and segments (an `l` line's, or a 2-corner face), the corners
 /// moved down over the spans' unused ends and the dropped entries, the face
 /// ends over the entry ends (each written at or before where it was read).
+/// Only the entries the geometry pass wrote are merged.
 void MergeChunks(std::span<const ObjChunk> chunks, const std::vector<uint32_t*>& spans,
                  Mesh& mesh) {
   size_t written = 0, faces = 0;
   for (size_t c = 0; c < chunks.size(); ++c) {
     const uint32_t* corners = spans[c];
     uint32_t start = 0;
-    for (uint64_t e = 0; e < chunks[c].counts.faces; ++e) {
+    for (uint64_t e = 0; e < chunks[c].entriesWritten; ++e) {
       const uint32_t entry = chunks[c].entryEnds[e];
       const uint32_t end = entry & ~kLineEntry;
       const uint32_t count = end - start;
@@ -278,6 +295,10 @@ void MergeChunks(std::span<const ObjChunk> chunks, const std::vector<uint32_t*>&
   }
   mesh.faceCorners.resize(written);
   mesh.faceStarts.resize(faces + 1);
+}
+
+LoadError ChangedError(const std::string& path, const char* message) {
+  return LoadError{path, 0, 0, message};
 }
 
 std::string MemoryBudgetMessage(uint64_t neededBytes, uint64_t budgetBytes) {
@@ -311,6 +332,8 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
     ReleaseBehind release(countRelease, text, chunk.text);
     chunk.counts = CountObj(chunk.text, release);
   });
+  if (owned != nullptr && owned->Shrank())
+    return Loaded<Mesh>(ChangedError(path, kFilePagesLostMessage));
   ObjCounts counts;
   for (ObjChunk& chunk : chunks) {
     if (chunk.counts.needsImporter) return std::nullopt;
@@ -361,9 +384,17 @@ std::optional<Loaded<Mesh>> ReadObjInChunks(std::string_view text, const std::st
       release.ReadTo(line.text.data());
       return parser.Line(line);
     });
+    parser.Finish();
   });
+  if (owned != nullptr && owned->Shrank())
+    return Loaded<Mesh>(ChangedError(path, kFilePagesLostMessage));
   for (const ObjChunk& chunk : chunks) {
     if (chunk.error) return Loaded<Mesh>(*chunk.error);
+    // Fewer lines than the counts: the file changed between the passes.
+    if (chunk.verticesWritten != chunk.counts.vertices ||
+        chunk.entriesWritten != chunk.counts.faces) {
+      return Loaded<Mesh>(ChangedError(path, kFileChangedMessage));
+    }
   }
 
   // Step 3: faces and segments in file order; an owned file is freed first.

@@ -432,18 +432,15 @@ uint64_t ReadPlainFaces(const Element& element, Reader& reader) {
   for (; f < element.count && at < rest.size(); ++f) {
     const size_t count = static_cast<uint8_t>(rest[at]);
     if (count < 3 || rest.size() - at - 1 < count * 4) break;
-    const char* indices = rest.data() + at + 1;
+    // Read once (a mapped file may change under the reader): the indices
+    // checked are the indices stored.
+    uint32_t indices[UINT8_MAX];
+    std::memcpy(indices, rest.data() + at + 1, count * 4);
     bool allNamed = true;
-    for (size_t i = 0; i < count; ++i) {
-      uint32_t index;
-      std::memcpy(&index, indices + i * 4, 4);
-      allNamed = allNamed && index < named;
-    }
+    for (size_t i = 0; i < count; ++i) allNamed = allNamed && indices[i] < named;
     if (!allNamed) break;
     for (size_t i = 0; i < count; ++i) {
-      uint32_t index;
-      std::memcpy(&index, indices + i * 4, 4);
-      mesh.faceCorners.push_back(index);
+      mesh.faceCorners.push_back(indices[i]);
       mesh.edgeHidden.push_back(0);
     }
     mesh.faceStarts.push_back(static_cast<uint32_t>(mesh.faceCorners.size()));
