@@ -1,11 +1,11 @@
 // Model files mapped instead of read: the same bytes and the same mesh as
 // read() and as Assimp, and a file that shrinks under its mapping gives a
 // clean error, never SIGBUS.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
-#include <sys/stat.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -173,8 +173,7 @@ TEST(FileBytes, FileChangedWithoutLosingAPageIsAnError) {
     Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
     ASSERT_FALSE(mesh.Ok()) << name;
     const std::string expected = std::string(name) + ": the file changed while it was read";
-    EXPECT_NE(mesh.Error().ToString().find(expected), std::string::npos)
-        << mesh.Error().ToString();
+    EXPECT_NE(mesh.Error().ToString().find(expected), std::string::npos) << mesh.Error().ToString();
   }
   const std::string bytes = ExportMesh(sphere, ExportFormat::kStl);
   const std::string path = folder.Write("rewritten.stl", bytes);

@@ -5,7 +5,6 @@
 
 #include <cstdint>
 
-
 namespace termshade {
 
 void AdviseHugePages(void* data, size_t bytes) {

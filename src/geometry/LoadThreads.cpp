@@ -54,8 +54,8 @@ void PopulateOnLoadThreads(void* data, size_t bytes) {
   const auto boundary = [=](int part) {
     if (part <= 0) return first;
     if (part >= threads) return last;
-    const uintptr_t at = first + (last - first) / static_cast<uintptr_t>(threads) *
-                                     static_cast<uintptr_t>(part);
+    const uintptr_t at =
+        first + (last - first) / static_cast<uintptr_t>(threads) * static_cast<uintptr_t>(part);
     return std::clamp(at & ~(kHugePage - 1), first, last);
   };
   RunOnLoadThreads(threads, [&boundary](int part) {

@@ -272,9 +272,8 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
 
   // Step 3: whether the model is a convex closed connected surface; the edge
   // uses are freed before the triangles and planes take their place.
-  const bool convex =
-      ConvexClosedSurface(scene.verticesWorld, faces, *adjacency, scene.diagonalModelUnits,
-                          knownClosed);
+  const bool convex = ConvexClosedSurface(scene.verticesWorld, faces, *adjacency,
+                                          scene.diagonalModelUnits, knownClosed);
   adjacency->ReleasePages();
   adjacency.reset();
 

@@ -208,8 +208,8 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path, File
   return ReadLaidOut(bytes, path, *triangles, parts, owned);
 }
 
-Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path,
-                                  size_t partCount, FileBytes* owned) {
+Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path, size_t partCount,
+                                  FileBytes* owned) {
   const std::optional<uint32_t> triangles = LaidOutTriangleCount(bytes);
   if (!triangles) return NotBinaryStlError(path);
   return ReadLaidOut(bytes, path, *triangles, partCount, owned);

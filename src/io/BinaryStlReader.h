@@ -29,7 +29,7 @@ Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path,
 
 /// ReadBinaryStl in partCount runs of triangles, each on its own thread:
 /// the same mesh for every partCount (what tests check).
-Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path,
-                                  size_t partCount, FileBytes* owned = nullptr);
+Loaded<Mesh> ReadBinaryStlInParts(std::string_view bytes, const std::string& path, size_t partCount,
+                                  FileBytes* owned = nullptr);
 
 }  // namespace termshade

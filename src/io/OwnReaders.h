@@ -21,7 +21,6 @@ namespace termshade {
 /// (as early as the reader can); left whole when the result is nullopt.
 std::optional<Loaded<Mesh>> ReadWithOwnReader(std::string_view bytes, const std::string& format,
                                               const std::string& displayName,
-                                              size_t memoryBudgetBytes,
-                                              FileBytes* owned = nullptr);
+                                              size_t memoryBudgetBytes, FileBytes* owned = nullptr);
 
 }  // namespace termshade
