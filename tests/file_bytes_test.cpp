@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 
 #include "geometry/Scene.h"
 #include "io/BinaryStlReader.h"
@@ -188,6 +189,16 @@ TEST(FileBytes, FileChangedWithoutLosingAPageIsAnError) {
       << mesh.Error().ToString();
 }
 
+// Writes bytes at the start of a mapping's private first page: what the
+// next read of that page sees until the page is handed back.
+bool WriteIntoFirstPage(FileBytes& file, std::string_view bytes) {
+  void* firstPage = const_cast<char*>(file.View().data());
+  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+  if (mprotect(firstPage, pageBytes, PROT_READ | PROT_WRITE) != 0) return false;
+  std::memcpy(firstPage, bytes.data(), bytes.size());
+  return mprotect(firstPage, pageBytes, PROT_READ) == 0;
+}
+
 // An OBJ whose first page reads differently in the two passes (the page,
 // written to in the private mapping, holds an extra face line for the counts;
 // the counting pass hands it back, so the geometry pass reads the file's
@@ -200,11 +211,7 @@ TEST(FileBytes, ObjThatLosesAFaceBetweenThePassesIsAnError) {
   Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
   ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
   FileBytes& file = mapped.Value();
-  void* firstPage = const_cast<char*>(file.View().data());
-  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
-  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ | PROT_WRITE), 0);
-  std::memcpy(firstPage, "f 1 2 3", 7);
-  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ), 0);
+  ASSERT_TRUE(WriteIntoFirstPage(file, "f 1 2 3"));
   std::optional<Loaded<Mesh>> read = ReadObjInChunks(file.View(), path, size_t{1} << 30, 1, &file);
   ASSERT_TRUE(read.has_value());
   ASSERT_FALSE(read->Ok());
@@ -223,11 +230,7 @@ TEST(FileBytes, ObjThatGainsAVertexBetweenThePassesIsAnError) {
   Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
   ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
   FileBytes& file = mapped.Value();
-  void* firstPage = const_cast<char*>(file.View().data());
-  const auto pageBytes = static_cast<size_t>(sysconf(_SC_PAGESIZE));
-  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ | PROT_WRITE), 0);
-  std::memcpy(firstPage, "#", 1);
-  ASSERT_EQ(mprotect(firstPage, pageBytes, PROT_READ), 0);
+  ASSERT_TRUE(WriteIntoFirstPage(file, "#"));
   std::optional<Loaded<Mesh>> read = ReadObjInChunks(file.View(), path, size_t{1} << 30, 1, &file);
   ASSERT_TRUE(read.has_value());
   ASSERT_FALSE(read->Ok());
