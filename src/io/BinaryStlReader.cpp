@@ -44,6 +44,8 @@ struct WeldPart {
   std::unique_ptr<char[]> keys;  ///< room for every key it may get, `distinct` written
   uint32_t distinct = 0;
   std::optional<KeyTable> table;
+  static constexpr size_t kChunkTriangles = 1024;
+  std::unique_ptr<char[]> chunk_;  ///< the records being welded, copied out of the file
 
   // Room for up to `most` keys (address space: untouched until written).
   void Allocate(size_t most) {
@@ -52,6 +54,7 @@ struct WeldPart {
     // A closed surface has about one vertex for 6 corners: the table starts
     // there and grows if the file has more.
     table.emplace(most / 5, CompactKeyAt{keys.get()});
+    chunk_.reset(new char[kChunkTriangles * kRecordBytes]);
   }
   const char* KeyAt(uint32_t vertex) const { return keys.get() + size_t{vertex} * kKeyBytes; }
 
@@ -65,37 +68,47 @@ struct WeldPart {
   }
 
   // Numbers the part's corners (in place in corners), reading its records
-  // in order, a batch at a time: hashes first and the table slots they
-  // start at prefetched, then the keys those slots hold, then the probes.
+  // in order a chunk at a time (copied out of the file once: FileBytes::
+  // CopyOut for a mapped one), each chunk a batch at a time: hashes first
+  // and the table slots they start at prefetched, then the keys those
+  // slots hold, then the probes.
   void Weld(std::string_view bytes, uint32_t* corners, FileBytes* owned) {
-    const char* records = bytes.data() + kFirstRecord;
-    const auto cornerAt = [records](size_t corner) {
-      return records + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
-    };
     constexpr size_t kBatch = 32;
     constexpr size_t kReleaseBytes = size_t{4} << 20;
     uint64_t hashes[kBatch];
-    // Each key copied out of the file once: a mapped file may change under
-    // the reader, and the key hashed must be the key stored.
-    char batchKeys[kBatch][kKeyBytes];
-    const size_t begin = 3 * firstTriangle, end = 3 * endTriangle;
+    char* const chunk = chunk_.get();
+    // Held bytes (not a mapping) are handed back as they are read.
+    const bool releaseBehind = owned != nullptr && !owned->Mapped();
     size_t released = kFirstRecord + firstTriangle * kRecordBytes;
-    for (size_t batch = begin; batch < end; batch += kBatch) {
-      const size_t batchEnd = std::min(end, batch + kBatch);
-      for (size_t i = batch; i < batchEnd; ++i) {
-        std::memcpy(batchKeys[i - batch], cornerAt(i), kKeyBytes);
-        hashes[i - batch] = table->Hash(batchKeys[i - batch]);
-        table->PrefetchSlot(hashes[i - batch]);
+    for (size_t chunkFirst = firstTriangle; chunkFirst < endTriangle;
+         chunkFirst += kChunkTriangles) {
+      const size_t chunkTriangles = std::min(kChunkTriangles, endTriangle - chunkFirst);
+      const size_t offset = kFirstRecord + chunkFirst * kRecordBytes;
+      if (owned != nullptr) {
+        owned->CopyOut(offset, chunkTriangles * kRecordBytes, chunk);
+      } else {
+        std::memcpy(chunk, bytes.data() + offset, chunkTriangles * kRecordBytes);
       }
-      for (size_t i = batch; i < batchEnd; ++i) {
-        const uint32_t held = table->HeldAt(hashes[i - batch]);
-        if (held != KeyTable::kEmpty) __builtin_prefetch(KeyAt(held));
+      const auto keyAt = [chunk](size_t corner) {
+        return chunk + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
+      };
+      const size_t begin = 3 * chunkFirst, end = 3 * (chunkFirst + chunkTriangles);
+      for (size_t batch = begin; batch < end; batch += kBatch) {
+        const size_t batchEnd = std::min(end, batch + kBatch);
+        for (size_t i = batch; i < batchEnd; ++i) {
+          hashes[i - batch] = table->Hash(keyAt(i - begin));
+          table->PrefetchSlot(hashes[i - batch]);
+        }
+        for (size_t i = batch; i < batchEnd; ++i) {
+          const uint32_t held = table->HeldAt(hashes[i - batch]);
+          if (held != KeyTable::kEmpty) __builtin_prefetch(KeyAt(held));
+        }
+        for (size_t i = batch; i < batchEnd; ++i) {
+          corners[i] = InsertHashed(keyAt(i - begin), hashes[i - batch]);
+        }
       }
-      for (size_t i = batch; i < batchEnd; ++i) {
-        corners[i] = InsertHashed(batchKeys[i - batch], hashes[i - batch]);
-      }
-      const size_t readTo = kFirstRecord + (batchEnd / 3) * kRecordBytes;
-      if (owned != nullptr && readTo >= released + kReleaseBytes) {
+      const size_t readTo = offset + chunkTriangles * kRecordBytes;
+      if (releaseBehind && readTo >= released + kReleaseBytes) {
         owned->Release(released, readTo);
         released = readTo;
       }
@@ -108,6 +121,7 @@ struct WeldPart {
     table.reset();
     ReleasePages(keys.get(), size_t{distinct} * kKeyBytes);
     keys.reset();
+    chunk_.reset();
   }
 };
 
