@@ -67,15 +67,36 @@ struct WeldPart {
     return number;
   }
 
+  // numbers[i] = Insert(keyAt(i)) for i < count, a batch at a time: hashes
+  // first and the table slots they start at prefetched, then the keys those
+  // slots hold, then the probes.
+  template <typename KeyAtIndex>
+  void InsertAll(size_t count, const KeyAtIndex& keyAt, uint32_t* numbers) {
+    constexpr size_t kBatch = 32;
+    uint64_t hashes[kBatch];
+    for (size_t batch = 0; batch < count; batch += kBatch) {
+      const size_t batchEnd = std::min(count, batch + kBatch);
+      for (size_t i = batch; i < batchEnd; ++i) {
+        hashes[i - batch] = table->Hash(keyAt(i));
+        table->PrefetchSlot(hashes[i - batch]);
+      }
+      for (size_t i = batch; i < batchEnd; ++i) {
+        const uint32_t held = table->HeldAt(hashes[i - batch]);
+        if (held != KeyTable::kEmpty) __builtin_prefetch(KeyAt(held));
+      }
+      for (size_t i = batch; i < batchEnd; ++i) {
+        numbers[i] = InsertHashed(keyAt(i), hashes[i - batch]);
+      }
+    }
+  }
+
   // Numbers the part's corners (in place in corners), reading its records
   // in order a chunk at a time (copied out of the file once: FileBytes::
   // CopyOut for a mapped one), each chunk a batch at a time: hashes first
   // and the table slots they start at prefetched, then the keys those
   // slots hold, then the probes.
   void Weld(std::string_view bytes, uint32_t* corners, FileBytes* owned) {
-    constexpr size_t kBatch = 32;
     constexpr size_t kReleaseBytes = size_t{4} << 20;
-    uint64_t hashes[kBatch];
     char* const chunk = chunk_.get();
     // Held bytes (not a mapping) are handed back as they are read.
     const bool releaseBehind = owned != nullptr && !owned->Mapped();
@@ -92,21 +113,7 @@ struct WeldPart {
       const auto keyAt = [chunk](size_t corner) {
         return chunk + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
       };
-      const size_t begin = 3 * chunkFirst, end = 3 * (chunkFirst + chunkTriangles);
-      for (size_t batch = begin; batch < end; batch += kBatch) {
-        const size_t batchEnd = std::min(end, batch + kBatch);
-        for (size_t i = batch; i < batchEnd; ++i) {
-          hashes[i - batch] = table->Hash(keyAt(i - begin));
-          table->PrefetchSlot(hashes[i - batch]);
-        }
-        for (size_t i = batch; i < batchEnd; ++i) {
-          const uint32_t held = table->HeldAt(hashes[i - batch]);
-          if (held != KeyTable::kEmpty) __builtin_prefetch(KeyAt(held));
-        }
-        for (size_t i = batch; i < batchEnd; ++i) {
-          corners[i] = InsertHashed(keyAt(i - begin), hashes[i - batch]);
-        }
-      }
+      InsertAll(3 * chunkTriangles, keyAt, corners + 3 * chunkFirst);
       const size_t readTo = offset + chunkTriangles * kRecordBytes;
       if (releaseBehind && readTo >= released + kReleaseBytes) {
         owned->Release(released, readTo);
@@ -175,13 +182,17 @@ Loaded<Mesh> ReadLaidOut(std::string_view bytes, const std::string& path, size_t
   WeldPart& first = parts[0];
   std::vector<uint32_t> globalOf;
   for (size_t p = 1; p < partCount; ++p) {
-    globalOf.resize(parts[p].distinct);
-    for (uint32_t local = 0; local < parts[p].distinct; ++local) {
-      globalOf[local] = first.Insert(parts[p].KeyAt(local));
-    }
-    uint32_t* corners = mesh.faceCorners.data() + 3 * parts[p].firstTriangle;
-    const size_t count = 3 * (parts[p].endTriangle - parts[p].firstTriangle);
-    for (size_t i = 0; i < count; ++i) corners[i] = globalOf[corners[i]];
+    const WeldPart& part = parts[p];
+    globalOf.resize(part.distinct);
+    first.InsertAll(
+        part.distinct, [&part](size_t local) { return part.KeyAt(static_cast<uint32_t>(local)); },
+        globalOf.data());
+    // The part's corners renumbered, split over the load threads.
+    uint32_t* corners = mesh.faceCorners.data() + 3 * part.firstTriangle;
+    const size_t count = 3 * (part.endTriangle - part.firstTriangle);
+    RunRangesOnLoadThreads(LoadThreadCount(count), count, [&](int, size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) corners[i] = globalOf[corners[i]];
+    });
     parts[p].Clear();
   }
   if (owned != nullptr) owned->Free();
