@@ -171,6 +171,7 @@ TEST(SceneTriangles, ThreadedTrianglesEqualTriangulatePolygon) {
 
 // The planes, computed over the load threads in ranges of faces, are each
 // face's plane as one loop gives it: no face skipped or given a neighbour's.
+// (Every face here is its one triangle: the planes take the fixed-size path.)
 TEST(ScenePlanes, SplitOverThreadsEqualOneLoop) {
   const Scene scene = PrepareScene(GenerateTriangleSphere(300000), UpAxis::kPlusY);
   ASSERT_EQ(scene.facePlanesWorld.size(), scene.FaceCount());

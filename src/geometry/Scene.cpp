@@ -218,7 +218,7 @@ bool TriangulateTrianglesOnLoadThreads(Scene& scene, const FaceList& faces) {
       const std::array<Vec3, 3> corners{points[c[0]], points[c[1]], points[c[2]]};
       if (!IsFinite(corners[0]) || !IsFinite(corners[1]) || !IsFinite(corners[2]) ||
           corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0] ||
-          !IsFinite(NewellNormal(std::span<const Vec3>(corners)))) {
+          !IsFinite(NewellNormal(3, [&corners](size_t i) { return corners[i]; }))) {
         simple.store(false, std::memory_order_relaxed);
         return;
       }
@@ -389,16 +389,24 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     scene.source.faces = std::move(faces);
   }
 
-  // Step 5: per-face planes, the faces split in ranges over the load threads.
+  // Step 5: per-face planes, the faces split in ranges over the load threads;
+  // where every face is its one triangle, its corners as a fixed-size array
+  // (the same sums, unrolled).
   ResizeFaultedIn(scene.facePlanesWorld, faceCount);
-  const int threads = LoadThreadCount(faceCount);
-  RunOnLoadThreads(threads, [&scene, faceCount, threads](int part) {
-    const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
-    const size_t end = faceCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
-    for (size_t face = begin; face < end; ++face) {
-      scene.facePlanesWorld[face] = PlaneOfFace(scene.verticesWorld, scene.Face(face));
-    }
-  });
+  const bool facesAreTriangles = scene.source.faces.corners.empty();
+  RunRangesOnLoadThreads(
+      LoadThreadCount(faceCount), faceCount,
+      [&scene, facesAreTriangles](int, size_t begin, size_t end) {
+        for (size_t face = begin; face < end; ++face) {
+          if (facesAreTriangles) {
+            const auto& t = scene.triangles[face].vertices;  // Scene::Face's corners
+            scene.facePlanesWorld[face] =
+                PlaneOfFace(scene.verticesWorld, std::array<uint32_t, 3>{t[1], t[2], t[0]});
+          } else {
+            scene.facePlanesWorld[face] = PlaneOfFace(scene.verticesWorld, scene.Face(face));
+          }
+        }
+      });
   scene.clusters = BuildClusters(scene);
   scene.convexClosedSolid = convex && !scene.triangles.empty();
   return scene;
