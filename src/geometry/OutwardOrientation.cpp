@@ -92,9 +92,9 @@ size_t OrientClosedPartsOutward(FaceList& faces, const EdgeAdjacency& edges,
   std::vector<uint8_t> openFace(faceCount, 0);
   edges.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
     const bool closedEdge = uses.size() == 2 && uses[0].Forward() != uses[1].Forward();
-    for (const EdgeUse& use : uses) {
-      parts.Join(use.Face(), uses[0].Face());
-      if (!closedEdge) openFace[use.Face()] = 1;
+    for (size_t i = 1; i < uses.size(); ++i) parts.Join(uses[i].Face(), uses[0].Face());
+    if (!closedEdge) {
+      for (const EdgeUse& use : uses) openFace[use.Face()] = 1;
     }
   });
 
