@@ -206,13 +206,14 @@ Loaded<Mesh> ReadLaidOut(std::string_view bytes, const std::string& path, size_t
   first.Clear();
 
   // Step 3: one face per triangle in file order.
-  mesh.faceStarts.reserve(triangles + 1);
-  mesh.edgeHidden.reserve(mesh.faceCorners.size());
-  AdviseHugePages(mesh.faceStarts);
-  AdviseHugePages(mesh.edgeHidden);
-  mesh.faceStarts.resize(triangles + 1);
-  for (size_t t = 0; t <= triangles; ++t) mesh.faceStarts[t] = static_cast<uint32_t>(t * 3);
-  mesh.edgeHidden.assign(mesh.faceCorners.size(), 0);
+  ResizeFaultedIn(mesh.faceStarts, triangles + 1);
+  ResizeFaultedIn(mesh.edgeHidden, mesh.faceCorners.size());  // zeros: no edge hidden
+  RunRangesOnLoadThreads(LoadThreadCount(triangles + 1), triangles + 1,
+                         [&mesh](int, size_t begin, size_t end) {
+                           for (size_t t = begin; t < end; ++t) {
+                             mesh.faceStarts[t] = static_cast<uint32_t>(t * 3);
+                           }
+                         });
   return mesh;
 }
 
