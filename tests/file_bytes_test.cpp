@@ -58,6 +58,30 @@ TEST(FileBytes, MappedBytesAreTheFile) {
   EXPECT_EQ(mapped.Value().Size(), 0U);
 }
 
+// CopyOut gives the bytes View gives, mapped (pread) or held, in any
+// pieces; past the end it gives zeros and marks the bytes Shrank.
+TEST(FileBytes, CopyOutGivesTheBytesAndZerosPastTheEnd) {
+  const test::ScratchFolder folder("termshade-file-bytes");
+  const std::string bytes = ExportMesh(GenerateTriangleSphere(2000), ExportFormat::kStl);
+  const std::string path = folder.Write("copied.stl", bytes);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+  FileBytes held(bytes);
+  const FileBytes* files[] = {&mapped.Value(), &held};
+  for (const FileBytes* file : files) {
+    std::string copied(bytes.size(), '?');
+    for (size_t at = 0; at < bytes.size(); at += 777) {
+      file->CopyOut(at, std::min<size_t>(777, bytes.size() - at), copied.data() + at);
+    }
+    EXPECT_EQ(copied, bytes) << file->Mapped();
+    EXPECT_FALSE(file->Shrank()) << file->Mapped();
+    std::string tail(100, '?');
+    file->CopyOut(bytes.size() - 50, 100, tail.data());
+    EXPECT_EQ(tail, bytes.substr(bytes.size() - 50) + std::string(50, '\0')) << file->Mapped();
+    EXPECT_TRUE(file->Shrank()) << file->Mapped();
+  }
+}
+
 TEST(FileBytes, EmptyFilesAndFoldersAreReadNotMapped) {
   const test::ScratchFolder folder("termshade-file-bytes");
   Loaded<FileBytes> empty = FileBytes::MapRegularFile(folder.Write("empty.stl", ""), kAnySize);
@@ -96,7 +120,8 @@ TEST(FileBytes, MappedLoadGivesTheSameMeshAsReadAndAsAssimp) {
 }
 
 // The file cut to half its size after it was mapped: the reader sees zeros
-// past the new end instead of SIGBUS, and the load is refused.
+// past the new end instead of SIGBUS (PLY, read through the mapping), or a
+// short pread (binary STL), and the load is refused.
 TEST(FileBytes, FileShrunkUnderTheMappingIsACleanError) {
   const test::ScratchFolder folder("termshade-file-bytes");
   const std::string bytes = ExportMesh(GenerateTriangleSphere(20'000), ExportFormat::kStl);
@@ -120,6 +145,17 @@ TEST(FileBytes, FileShrunkUnderTheMappingIsACleanError) {
           << mesh.Error().ToString();
     }
   }
+  const std::string ply = ExportMesh(GenerateTriangleSphere(20'000), ExportFormat::kPly);
+  const std::string path = folder.Write("cut_loader.ply", ply);
+  Loaded<FileBytes> mapped = FileBytes::MapRegularFile(path, kAnySize);
+  ASSERT_TRUE(mapped.Ok() && mapped.Value().Mapped());
+  ASSERT_EQ(truncate(path.c_str(), static_cast<off_t>(ply.size() / 2)), 0);
+  Loaded<Mesh> mesh = LoadModelFileBytes(std::move(mapped.Value()), path);
+  ASSERT_FALSE(mesh.Ok());
+  EXPECT_NE(mesh.Error().ToString().find("cut_loader.ply: the file changed while it was read, or "
+                                         "a part of it could not be read"),
+            std::string::npos)
+      << mesh.Error().ToString();
 }
 
 // The same on the load threads: a STL welded in 4 runs and an OBJ read in 4

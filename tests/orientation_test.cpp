@@ -2,12 +2,50 @@
 // turned outward once when the scene is prepared; open sheets keep their winding.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <vector>
+
 #include "geometry/OutwardOrientation.h"
 #include "io/SceneGenerators.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
 namespace {
+
+// The edge uses of a mesh big enough for the load threads (a quad and a
+// hidden edge among its triangles, some faces reversed) are every face
+// edge once, grouped by undirected edge in (smaller, larger vertex, face)
+// order: what a single sorted list of them gives.
+TEST(EdgeAdjacency, SplitOverThreadsEqualsOneSortedList) {
+  Mesh mesh = GenerateTriangleSphere(300'000);
+  for (size_t f = 0; f < mesh.FaceCount(); f += 7) ReverseFace(mesh, f);
+  mesh.edgeHidden[4] = 1;
+  const uint32_t quad[4] = {0, 1, 2, 3};
+  mesh.AddFace(quad);
+  using Use = std::array<uint32_t, 5>;  // smaller, larger vertex, face, forward, hidden
+  std::vector<Use> expected;
+  for (uint32_t f = 0; f < mesh.FaceCount(); ++f) {
+    const auto corners = mesh.Face(f);
+    for (size_t i = 0; i < corners.size(); ++i) {
+      const uint32_t a = corners[i], b = corners[(i + 1) % corners.size()];
+      if (a == b) continue;
+      expected.push_back(
+          {std::min(a, b), std::max(a, b), f, a < b ? 1U : 0U, mesh.EdgeHidden(f, i) ? 1U : 0U});
+    }
+  }
+  std::sort(expected.begin(), expected.end());
+  const EdgeAdjacency adjacency(mesh.verticesFile.size(), mesh);
+  std::vector<Use> actual;
+  adjacency.ForEachEdge([&](uint32_t low, std::span<const EdgeUse> uses) {
+    for (const EdgeUse& use : uses) {
+      actual.push_back(
+          {low, use.highVertex, use.Face(), use.Forward() ? 1U : 0U, use.Hidden() ? 1U : 0U});
+    }
+  });
+  EXPECT_EQ(adjacency.UseCount(), expected.size());
+  EXPECT_TRUE(actual == expected);
+}
 
 Mesh Cube(Vec3 offset = {}) {
   Mesh mesh;

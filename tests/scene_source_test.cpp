@@ -46,6 +46,52 @@ TEST(SceneSource, OffsetDoublesAndPolygonsComeBackExactly) {
   }
 }
 
+// World space computed in place on the load threads equals one plain loop
+// of ZUpFromFile(file) - center, for every up axis, both when a few file
+// vertices are listed and when all are kept; the file comes back bit for bit.
+TEST(SceneSource, WorldVerticesOnLoadThreadsEqualOneLoop) {
+  const Mesh sphere = GenerateTriangleSphere(600'000);  // ~300k vertices: two threads
+  for (const bool shifted : {false, true}) {
+    Mesh mesh = sphere;
+    if (shifted) {  // a center off every grid the coordinates are on
+      for (Vec3& p : mesh.verticesFile) p = p * 0.1 + Vec3{0.1 / 3.0, 0.1 / 7.0, 0.1 / 11.0};
+    } else {
+      // Bounds centered on 0, where only -0.0 (0.0 after - 0 + 0) is inexact.
+      mesh.verticesFile.push_back({2.0, 2.0, 2.0});
+      mesh.verticesFile.push_back({-2.0, -2.0, -2.0});
+    }
+    mesh.verticesFile[7] = {NAN, 1.0, 2.0};  // not finite: outside the bounds and radius
+    mesh.verticesFile[9] = {-0.0, -0.0, -0.0};
+    for (const UpAxis up : {UpAxis::kPlusX, UpAxis::kMinusX, UpAxis::kPlusY, UpAxis::kMinusY,
+                            UpAxis::kPlusZ, UpAxis::kMinusZ}) {
+      Vec3 low{INFINITY, INFINITY, INFINITY}, high{-INFINITY, -INFINITY, -INFINITY};
+      for (const Vec3& pFile : mesh.verticesFile) {
+        const Vec3 p = ZUpFromFile(up, pFile);
+        if (!IsFinite(p)) continue;
+        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+      }
+      const Vec3 center = (low + high) * 0.5;
+      const Scene scene = PrepareScene(mesh, up);
+      ASSERT_EQ(scene.verticesWorld.size(), mesh.verticesFile.size());
+      double radius = 0.0;
+      for (size_t v = 0; v < mesh.verticesFile.size(); ++v) {
+        const Vec3 expected = ZUpFromFile(up, mesh.verticesFile[v]) - center;
+        ASSERT_EQ(std::memcmp(&scene.verticesWorld[v], &expected, sizeof(Vec3)), 0) << v;
+        if (IsFinite(ZUpFromFile(up, mesh.verticesFile[v])))
+          radius = std::max(radius, Length(expected));
+        const Vec3 file = scene.VertexFile(v);
+        ASSERT_EQ(std::memcmp(&file, &mesh.verticesFile[v], sizeof(Vec3)), 0) << v;
+      }
+      EXPECT_EQ(scene.radiusModelUnits, radius);
+      EXPECT_EQ(scene.diagonalModelUnits, Length(high - low));
+      // Unshifted, few are inexact (listed); shifted, past an eighth (all kept).
+      EXPECT_EQ(scene.source.verticesFile.empty(), !shifted) << static_cast<int>(up);
+      EXPECT_EQ(scene.source.inexactVertices.empty(), shifted) << static_cast<int>(up);
+    }
+  }
+}
+
 // Every triangle's face, read through the maps, holds it: the face's range
 // of triangles covers triangle t, and the ranges tile the triangles in order.
 void ExpectFaceMapsAgree(const Scene& scene) {
@@ -125,6 +171,7 @@ TEST(SceneTriangles, ThreadedTrianglesEqualTriangulatePolygon) {
 
 // The planes, computed over the load threads in ranges of faces, are each
 // face's plane as one loop gives it: no face skipped or given a neighbour's.
+// (Every face here is its one triangle: the planes take the fixed-size path.)
 TEST(ScenePlanes, SplitOverThreadsEqualOneLoop) {
   const Scene scene = PrepareScene(GenerateTriangleSphere(300000), UpAxis::kPlusY);
   ASSERT_EQ(scene.facePlanesWorld.size(), scene.FaceCount());

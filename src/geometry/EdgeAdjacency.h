@@ -90,37 +90,63 @@ template <typename Faces>
 EdgeAdjacency::EdgeAdjacency(size_t vertexCount, const Faces& faces) {
   const size_t faceCount = faces.FaceCount();
   if (faceCount >= kMaxFaces) throw std::length_error("more than 2^30 faces");
-  auto forEachFaceEdge = [&faces, faceCount](auto&& use) {
-    for (uint32_t face = 0; face < faceCount; ++face) {
+  // Each face edge a -> b (a != b) of the faces in [faceBegin, faceEnd).
+  auto forEachFaceEdge = [&faces](size_t faceBegin, size_t faceEnd, auto&& use) {
+    for (auto face = static_cast<uint32_t>(faceBegin); face < faceEnd; ++face) {
       const auto corners = faces.Face(face);
-      for (size_t i = 0; i < corners.size(); ++i) {
-        const uint32_t a = corners[i], b = corners[(i + 1) % corners.size()];
+      const size_t n = corners.size();
+      for (size_t i = 0; i < n; ++i) {
+        const uint32_t a = corners[i], b = corners[i + 1 == n ? 0 : i + 1];
         if (a != b) use(a, b, face, i);
       }
     }
   };
-  // Step 1: how many edges start at each smaller vertex.
+  // Steps 1 and 2, a counting sort by smaller vertex, split by faces over
+  // the load threads: each counts its faces' edges per vertex, and places
+  // them after those of the faces before its own (the arrays one pass gives).
+  const int threads = LoadThreadCount(faceCount);
+  const auto parts = static_cast<size_t>(std::max(threads, 1));
+  std::vector<std::vector<uint32_t>> placed(parts);  // per part and vertex: counts, then cursors
+  for (std::vector<uint32_t>& part : placed) {
+    part.reserve(vertexCount);
+    AdviseHugePages(part);
+    part.assign(vertexCount, 0);
+  }
+
+  // Step 1: how many edges start at each smaller vertex, per part.
+  RunRangesOnLoadThreads(threads, faceCount, [&](int part, size_t begin, size_t end) {
+    uint32_t* counts = placed[static_cast<size_t>(part)].data();
+    forEachFaceEdge(begin, end, [counts](uint32_t a, uint32_t b, uint32_t, size_t) {
+      ++counts[std::min(a, b)];
+    });
+  });
   starts_.reserve(vertexCount + 1);
   AdviseHugePages(starts_);
-  starts_.assign(vertexCount + 1, 0);
-  forEachFaceEdge([&](uint32_t a, uint32_t b, uint32_t, size_t) { ++starts_[std::min(a, b) + 1]; });
-  for (size_t v = 0; v < vertexCount; ++v) starts_[v + 1] += starts_[v];
-
-  // Step 2: place each use in its vertex's range.
-  ResizeFaultedIn(uses_, starts_.back());
-  {
-    std::vector<uint32_t> filled(starts_.begin(), starts_.end() - 1);
-    forEachFaceEdge([&](uint32_t a, uint32_t b, uint32_t face, size_t i) {
-      uses_[filled[std::min(a, b)]++] = {std::max(a, b), face, a < b, faces.EdgeHidden(face, i)};
-    });
+  starts_.resize(vertexCount + 1);
+  uint32_t total = 0;
+  for (size_t v = 0; v < vertexCount; ++v) {
+    starts_[v] = total;
+    for (std::vector<uint32_t>& part : placed) {
+      const uint32_t count = part[v];
+      part[v] = total;  // where the part's first use of v goes
+      total += count;
+    }
   }
+  starts_[vertexCount] = total;
+
+  // Step 2: place each use in its vertex's range, faces in order.
+  ResizeFaultedIn(uses_, total);
+  RunRangesOnLoadThreads(threads, faceCount, [&](int part, size_t begin, size_t end) {
+    uint32_t* cursors = placed[static_cast<size_t>(part)].data();
+    forEachFaceEdge(begin, end, [&](uint32_t a, uint32_t b, uint32_t face, size_t i) {
+      uses_[cursors[std::min(a, b)]++] = {std::max(a, b), face, a < b, faces.EdgeHidden(face, i)};
+    });
+  });
+  placed.clear();  // freed for the next arrays (orientation's) to reuse
 
   // Step 3: within a vertex, by larger vertex, then face; the vertices
   // split over the load threads.
-  const int threads = LoadThreadCount(uses_.size());
-  RunOnLoadThreads(threads, [this, vertexCount, threads](int part) {
-    const size_t begin = vertexCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
-    const size_t end = vertexCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
+  RunRangesOnLoadThreads(threads, vertexCount, [this](int, size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       std::sort(uses_.begin() + starts_[v], uses_.begin() + starts_[v + 1],
                 [](const EdgeUse& p, const EdgeUse& q) { return p.SortKey() < q.SortKey(); });

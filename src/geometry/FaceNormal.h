@@ -17,7 +17,7 @@ Vec3 NewellNormal(size_t cornerCount, CornerToPoint pointAt) {
   const Vec3 origin = pointAt(0);
   for (size_t i = 0; i < cornerCount; ++i) {
     const Vec3 a = pointAt(i) - origin;
-    const Vec3 b = pointAt((i + 1) % cornerCount) - origin;
+    const Vec3 b = pointAt(i + 1 == cornerCount ? 0 : i + 1) - origin;
     sum.x += (a.y - b.y) * (a.z + b.z);
     sum.y += (a.z - b.z) * (a.x + b.x);
     sum.z += (a.x - b.x) * (a.y + b.y);

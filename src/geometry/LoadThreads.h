@@ -19,6 +19,17 @@ int LoadThreadCount(size_t items);
 /// thread that waits for input) and work must not allocate or throw there.
 void RunOnLoadThreads(int threads, const std::function<void(int)>& work);
 
+/// Splits [0, count) into `threads` ranges in order and runs
+/// work(part, begin, end) for each on the load threads (RunOnLoadThreads).
+template <typename Work>
+void RunRangesOnLoadThreads(int threads, size_t count, const Work& work) {
+  RunOnLoadThreads(threads, [&work, threads, count](int part) {
+    const auto parts = static_cast<size_t>(threads);
+    const auto at = static_cast<size_t>(part);
+    work(part, count * at / parts, count * (at + 1) / parts);
+  });
+}
+
 /// Faults in the whole pages inside [data, data + bytes) now, writable, split
 /// over the load threads (MADV_POPULATE_WRITE; the contents stay as they
 /// are): the kernel's zeroing of fresh pages, most of what filling a new

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/HugePages.h"
+
 namespace termshade {
 namespace {
 
@@ -19,7 +21,27 @@ class FaceParts {
   }
   void Join(uint32_t f, uint32_t g) { parent_[Root(f)] = Root(g); }
 
+  /// Numbers the parts by their first face and returns how many there are;
+  /// after it, Part(f) is face f's part and Root and Join are unusable.
+  uint32_t NumberParts() {
+    const auto faceCount = static_cast<uint32_t>(parent_.size());
+    for (uint32_t f = 0; f < faceCount; ++f) parent_[f] = Root(f);  // each face at its root
+    // A numbered entry carries kNumbered (faces are below 2^30): a root's
+    // when its part was first met, a face's once it is read.
+    uint32_t parts = 0;
+    for (uint32_t f = 0; f < faceCount; ++f) {
+      if ((parent_[f] & kNumbered) != 0) continue;  // a root numbered by an earlier face
+      const uint32_t root = parent_[f];
+      if ((parent_[root] & kNumbered) == 0) parent_[root] = kNumbered | parts++;
+      parent_[f] = parent_[root];
+    }
+    return parts;
+  }
+  uint32_t Part(uint32_t f) const { return parent_[f] & ~kNumbered; }
+  void Free() { FreeAndReleasePages(parent_); }
+
  private:
+  static constexpr uint32_t kNumbered = uint32_t{1} << 31;
   std::vector<uint32_t> parent_;
 };
 
@@ -70,38 +92,36 @@ size_t OrientClosedPartsOutward(FaceList& faces, const EdgeAdjacency& edges,
   std::vector<uint8_t> openFace(faceCount, 0);
   edges.ForEachEdge([&](uint32_t, std::span<const EdgeUse> uses) {
     const bool closedEdge = uses.size() == 2 && uses[0].Forward() != uses[1].Forward();
-    for (const EdgeUse& use : uses) {
-      parts.Join(use.Face(), uses[0].Face());
-      if (!closedEdge) openFace[use.Face()] = 1;
+    for (size_t i = 1; i < uses.size(); ++i) parts.Join(uses[i].Face(), uses[0].Face());
+    if (!closedEdge) {
+      for (const EdgeUse& use : uses) openFace[use.Face()] = 1;
     }
   });
 
-  // Step 2: each part's volume and whether it is closed.
-  std::vector<double> sixVolume(faceCount, 0.0);
-  std::vector<uint8_t> openPart(faceCount, 0);
+  // Step 2: each part's volume (its faces summed in order) and whether it
+  // is closed.
+  const uint32_t partCount = parts.NumberParts();
+  std::vector<double> sixVolume(partCount, 0.0);
+  std::vector<uint8_t> openPart(partCount, 0);
   for (uint32_t f = 0; f < faceCount; ++f) {
-    const uint32_t root = parts.Root(f);
-    sixVolume[root] += SixVolumeUnderFace(faces, f, points);
-    openPart[root] = openPart[root] | openFace[f];
+    const uint32_t part = parts.Part(f);
+    sixVolume[part] += SixVolumeUnderFace(faces, f, points);
+    openPart[part] = openPart[part] | openFace[f];
   }
-
-  if (oneClosedPart != nullptr) {
-    *oneClosedPart = faceCount > 0;
-    for (uint32_t f = 0; f < faceCount && *oneClosedPart; ++f) {
-      *oneClosedPart = openFace[f] == 0 && parts.Root(f) == parts.Root(0);
-    }
-  }
+  FreeAndReleasePages(openFace);
+  if (oneClosedPart != nullptr) *oneClosedPart = partCount == 1 && openPart[0] == 0;
 
   // Step 3: reverse the faces of closed parts with negative volume (NaN from
   // non-finite coordinates is not negative: those parts stay as they are).
   size_t reversed = 0;
   for (uint32_t f = 0; f < faceCount; ++f) {
-    const uint32_t root = parts.Root(f);
-    if (openPart[root] == 0 && sixVolume[root] < 0.0) {
+    const uint32_t part = parts.Part(f);
+    if (openPart[part] == 0 && sixVolume[part] < 0.0) {
       ReverseFace(faces, f);
       ++reversed;
     }
   }
+  parts.Free();
   return reversed;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <span>
@@ -31,12 +32,116 @@ struct Bounds {
   bool Empty() const { return !(low.x <= high.x); }
 };
 
-Bounds FiniteBounds(const std::vector<Vec3>& points) {
-  Bounds bounds;
-  for (const Vec3& p : points) {
-    if (IsFinite(p)) bounds.Add(p);
+bool SameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof(double)) == 0;
+}
+
+// ZUpFromFile(up, p) inline: the turn copies each component from one file
+// component, its sign flipped or not (read off the turn's matrix).
+class TurnUp {
+ public:
+  explicit TurnUp(UpAxis up) {
+    const Mat4 turn = ZUpFromFile(up);
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 3; ++col) {
+        if (turn.At(row, col) == 0.0) continue;
+        source_[row] = col;
+        negate_[row] = turn.At(row, col) < 0.0;
+      }
+    }
   }
-  return bounds;
+  Vec3 operator()(Vec3 pFile) const {
+    const double file[3] = {pFile.x, pFile.y, pFile.z};
+    const auto component = [&](int row) {
+      return negate_[row] ? -file[source_[row]] : file[source_[row]];
+    };
+    return {component(0), component(1), component(2)};
+  }
+
+ private:
+  int source_[3] = {0, 1, 2};
+  bool negate_[3] = {false, false, false};
+};
+
+// FileFromZUp(up, pWorld + center) has the bits of the file's vertex, whose
+// turned copy is pZUp: the turn only moves and negates components (exact
+// both ways), so each component of pWorld + center must be pZUp's.
+bool GivesBackExactly(Vec3 pWorld, Vec3 center, Vec3 pZUp) {
+  return SameBits(pWorld.x + center.x, pZUp.x) && SameBits(pWorld.y + center.y, pZUp.y) &&
+         SameBits(pWorld.z + center.z, pZUp.z);
+}
+
+// Step 1 of PrepareScene, on the load threads: the file's vertices turned
+// up (+z) and centered on their finite bounding box, in place (the array
+// becomes scene.verticesWorld: no second array); of the file's vertices,
+// only those world space does not give back bit for bit are kept
+// (SceneSource::KeepVerticesFile's choice: listed, or all past an eighth).
+void TakeVerticesAsWorld(Scene& scene, std::vector<Vec3> points) {
+  const TurnUp turn(scene.upAxis);
+  const size_t vertexCount = points.size();
+  const int threads = LoadThreadCount(vertexCount);
+  const auto parts = static_cast<size_t>(std::max(threads, 1));
+  // Step 1a: the bounds of the finite turned points, a part a thread.
+  std::vector<Bounds> partBounds(parts);
+  RunRangesOnLoadThreads(threads, vertexCount, [&](int part, size_t begin, size_t end) {
+    Bounds& bounds = partBounds[static_cast<size_t>(part)];
+    for (size_t v = begin; v < end; ++v) {
+      const Vec3 p = turn(points[v]);
+      if (IsFinite(p)) bounds.Add(p);
+    }
+  });
+  Bounds bounds;
+  for (const Bounds& part : partBounds) {
+    if (!part.Empty()) {
+      bounds.Add(part.low);
+      bounds.Add(part.high);
+    }
+  }
+  const Vec3 center = bounds.Empty() ? Vec3{} : (bounds.low + bounds.high) * 0.5;
+  scene.worldFromFile = Mat4::Translation(-center) * ZUpFromFile(scene.upAxis);
+  scene.diagonalModelUnits = bounds.Empty() ? 0.0 : Length(bounds.high - bounds.low);
+  scene.source.shiftZUp = center;
+
+  // Step 1b: how many vertices world space does not give back, per part.
+  std::vector<size_t> inexactBefore(parts + 1, 0);
+  RunRangesOnLoadThreads(threads, vertexCount, [&](int part, size_t begin, size_t end) {
+    size_t inexact = 0;
+    for (size_t v = begin; v < end; ++v) {
+      const Vec3 p = turn(points[v]);
+      inexact += GivesBackExactly(p - center, center, p) ? 0 : 1;
+    }
+    inexactBefore[static_cast<size_t>(part) + 1] = inexact;
+  });
+  for (size_t part = 0; part < parts; ++part) inexactBefore[part + 1] += inexactBefore[part];
+  SceneSource& source = scene.source;
+  source.verticesFile.clear();
+  const bool keepAll = inexactBefore.back() > vertexCount / 8;
+  if (keepAll) source.verticesFile = points;
+  source.inexactVertices.assign(keepAll ? 0 : inexactBefore.back(), 0);
+  source.inexactVerticesFile.assign(source.inexactVertices.size(), Vec3{});
+
+  // Step 1c: world space in place, the inexact file vertices listed
+  // (ascending: each part writes its own stretch), the radius per part.
+  std::vector<double> partRadius(parts, 0.0);
+  RunRangesOnLoadThreads(threads, vertexCount, [&](int part, size_t begin, size_t end) {
+    size_t listed = inexactBefore[static_cast<size_t>(part)];
+    double radius = 0.0;
+    for (size_t v = begin; v < end; ++v) {
+      const Vec3 pFile = points[v];
+      const Vec3 p = turn(pFile);
+      const bool finite = IsFinite(p);
+      points[v] = p - center;
+      if (finite) radius = std::max(radius, Length(points[v]));
+      if (!keepAll && !GivesBackExactly(points[v], center, p)) {
+        source.inexactVertices[listed] = static_cast<uint32_t>(v);
+        source.inexactVerticesFile[listed++] = pFile;
+      }
+    }
+    partRadius[static_cast<size_t>(part)] = radius;
+  });
+  for (double radius : partRadius)
+    scene.radiusModelUnits = std::max(scene.radiusModelUnits, radius);
+  scene.verticesWorld = std::move(points);
 }
 
 // The face's plane through its mean corner (exact for planar faces, a
@@ -113,7 +218,7 @@ bool TriangulateTrianglesOnLoadThreads(Scene& scene, const FaceList& faces) {
       const std::array<Vec3, 3> corners{points[c[0]], points[c[1]], points[c[2]]};
       if (!IsFinite(corners[0]) || !IsFinite(corners[1]) || !IsFinite(corners[2]) ||
           corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0] ||
-          !IsFinite(NewellNormal(std::span<const Vec3>(corners)))) {
+          !IsFinite(NewellNormal(3, [&corners](size_t i) { return corners[i]; }))) {
         simple.store(false, std::memory_order_relaxed);
         return;
       }
@@ -237,25 +342,9 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   FaceList faces = TakeFaces(mesh);
 
   // Step 1: world space is file space turned up (+z), centered on the bounding
-  // box; of the file's vertices, only those world space does not give back are kept.
-  ResizeFaultedIn(scene.verticesWorld, mesh.verticesFile.size());
-  for (size_t v = 0; v < mesh.verticesFile.size(); ++v) {
-    scene.verticesWorld[v] = ZUpFromFile(scene.upAxis, mesh.verticesFile[v]);
-  }
-  const Bounds bounds = FiniteBounds(scene.verticesWorld);
-  const Vec3 center = bounds.Empty() ? Vec3{} : (bounds.low + bounds.high) * 0.5;
-  scene.worldFromFile = Mat4::Translation(-center) * ZUpFromFile(scene.upAxis);
-  scene.diagonalModelUnits = bounds.Empty() ? 0.0 : Length(bounds.high - bounds.low);
-  for (Vec3& p : scene.verticesWorld) {
-    const bool finite = IsFinite(p);
-    p = p - center;
-    if (finite) scene.radiusModelUnits = std::max(scene.radiusModelUnits, Length(p));
-  }
-  scene.source.shiftZUp = center;
-  scene.source.KeepVerticesFile(scene.upAxis, scene.verticesWorld, mesh.verticesFile);
-  // Freed arrays' pages are handed back here and below: the heap keeps freed
-  // memory for reuse (HeapPolicy.h), and these big holes would stay resident.
-  FreeAndReleasePages(mesh.verticesFile);
+  // box, in the file's vertex array; of the file's vertices, only those world
+  // space does not give back are kept.
+  TakeVerticesAsWorld(scene, std::move(mesh.verticesFile));
   const size_t vertexCount = scene.verticesWorld.size();
 
   // Step 2: inside-out closed parts turned outward, once.
@@ -300,16 +389,24 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     scene.source.faces = std::move(faces);
   }
 
-  // Step 5: per-face planes, the faces split in ranges over the load threads.
+  // Step 5: per-face planes, the faces split in ranges over the load threads;
+  // where every face is its one triangle, its corners as a fixed-size array
+  // (the same sums, unrolled).
   ResizeFaultedIn(scene.facePlanesWorld, faceCount);
-  const int threads = LoadThreadCount(faceCount);
-  RunOnLoadThreads(threads, [&scene, faceCount, threads](int part) {
-    const size_t begin = faceCount * static_cast<size_t>(part) / static_cast<size_t>(threads);
-    const size_t end = faceCount * static_cast<size_t>(part + 1) / static_cast<size_t>(threads);
-    for (size_t face = begin; face < end; ++face) {
-      scene.facePlanesWorld[face] = PlaneOfFace(scene.verticesWorld, scene.Face(face));
-    }
-  });
+  const bool facesAreTriangles = scene.source.faces.corners.empty();
+  RunRangesOnLoadThreads(
+      LoadThreadCount(faceCount), faceCount,
+      [&scene, facesAreTriangles](int, size_t begin, size_t end) {
+        for (size_t face = begin; face < end; ++face) {
+          if (facesAreTriangles) {
+            const auto& t = scene.triangles[face].vertices;  // Scene::Face's corners
+            scene.facePlanesWorld[face] =
+                PlaneOfFace(scene.verticesWorld, std::array<uint32_t, 3>{t[1], t[2], t[0]});
+          } else {
+            scene.facePlanesWorld[face] = PlaneOfFace(scene.verticesWorld, scene.Face(face));
+          }
+        }
+      });
   scene.clusters = BuildClusters(scene);
   scene.convexClosedSolid = convex && !scene.triangles.empty();
   return scene;

@@ -44,6 +44,8 @@ struct WeldPart {
   std::unique_ptr<char[]> keys;  ///< room for every key it may get, `distinct` written
   uint32_t distinct = 0;
   std::optional<KeyTable> table;
+  static constexpr size_t kChunkTriangles = 1024;
+  std::unique_ptr<char[]> chunk_;  ///< the records being welded, copied out of the file
 
   // Room for up to `most` keys (address space: untouched until written).
   void Allocate(size_t most) {
@@ -52,6 +54,7 @@ struct WeldPart {
     // A closed surface has about one vertex for 6 corners: the table starts
     // there and grows if the file has more.
     table.emplace(most / 5, CompactKeyAt{keys.get()});
+    chunk_.reset(new char[kChunkTriangles * kRecordBytes]);
   }
   const char* KeyAt(uint32_t vertex) const { return keys.get() + size_t{vertex} * kKeyBytes; }
 
@@ -64,27 +67,17 @@ struct WeldPart {
     return number;
   }
 
-  // Numbers the part's corners (in place in corners), reading its records
-  // in order, a batch at a time: hashes first and the table slots they
-  // start at prefetched, then the keys those slots hold, then the probes.
-  void Weld(std::string_view bytes, uint32_t* corners, FileBytes* owned) {
-    const char* records = bytes.data() + kFirstRecord;
-    const auto cornerAt = [records](size_t corner) {
-      return records + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
-    };
+  // numbers[i] = Insert(keyAt(i)) for i < count, a batch at a time: hashes
+  // first and the table slots they start at prefetched, then the keys those
+  // slots hold, then the probes.
+  template <typename KeyAtIndex>
+  void InsertAll(size_t count, const KeyAtIndex& keyAt, uint32_t* numbers) {
     constexpr size_t kBatch = 32;
-    constexpr size_t kReleaseBytes = size_t{4} << 20;
     uint64_t hashes[kBatch];
-    // Each key copied out of the file once: a mapped file may change under
-    // the reader, and the key hashed must be the key stored.
-    char batchKeys[kBatch][kKeyBytes];
-    const size_t begin = 3 * firstTriangle, end = 3 * endTriangle;
-    size_t released = kFirstRecord + firstTriangle * kRecordBytes;
-    for (size_t batch = begin; batch < end; batch += kBatch) {
-      const size_t batchEnd = std::min(end, batch + kBatch);
+    for (size_t batch = 0; batch < count; batch += kBatch) {
+      const size_t batchEnd = std::min(count, batch + kBatch);
       for (size_t i = batch; i < batchEnd; ++i) {
-        std::memcpy(batchKeys[i - batch], cornerAt(i), kKeyBytes);
-        hashes[i - batch] = table->Hash(batchKeys[i - batch]);
+        hashes[i - batch] = table->Hash(keyAt(i));
         table->PrefetchSlot(hashes[i - batch]);
       }
       for (size_t i = batch; i < batchEnd; ++i) {
@@ -92,10 +85,37 @@ struct WeldPart {
         if (held != KeyTable::kEmpty) __builtin_prefetch(KeyAt(held));
       }
       for (size_t i = batch; i < batchEnd; ++i) {
-        corners[i] = InsertHashed(batchKeys[i - batch], hashes[i - batch]);
+        numbers[i] = InsertHashed(keyAt(i), hashes[i - batch]);
       }
-      const size_t readTo = kFirstRecord + (batchEnd / 3) * kRecordBytes;
-      if (owned != nullptr && readTo >= released + kReleaseBytes) {
+    }
+  }
+
+  // Numbers the part's corners (in place in corners), reading its records
+  // in order a chunk at a time (copied out of the file once: FileBytes::
+  // CopyOut for a mapped one), each chunk a batch at a time: hashes first
+  // and the table slots they start at prefetched, then the keys those
+  // slots hold, then the probes.
+  void Weld(std::string_view bytes, uint32_t* corners, FileBytes* owned) {
+    constexpr size_t kReleaseBytes = size_t{4} << 20;
+    char* const chunk = chunk_.get();
+    // Held bytes (not a mapping) are handed back as they are read.
+    const bool releaseBehind = owned != nullptr && !owned->Mapped();
+    size_t released = kFirstRecord + firstTriangle * kRecordBytes;
+    for (size_t chunkFirst = firstTriangle; chunkFirst < endTriangle;
+         chunkFirst += kChunkTriangles) {
+      const size_t chunkTriangles = std::min(kChunkTriangles, endTriangle - chunkFirst);
+      const size_t offset = kFirstRecord + chunkFirst * kRecordBytes;
+      if (owned != nullptr) {
+        owned->CopyOut(offset, chunkTriangles * kRecordBytes, chunk);
+      } else {
+        std::memcpy(chunk, bytes.data() + offset, chunkTriangles * kRecordBytes);
+      }
+      const auto keyAt = [chunk](size_t corner) {
+        return chunk + (corner / 3) * kRecordBytes + 12 + (corner % 3) * 12;
+      };
+      InsertAll(3 * chunkTriangles, keyAt, corners + 3 * chunkFirst);
+      const size_t readTo = offset + chunkTriangles * kRecordBytes;
+      if (releaseBehind && readTo >= released + kReleaseBytes) {
         owned->Release(released, readTo);
         released = readTo;
       }
@@ -108,6 +128,7 @@ struct WeldPart {
     table.reset();
     ReleasePages(keys.get(), size_t{distinct} * kKeyBytes);
     keys.reset();
+    chunk_.reset();
   }
 };
 
@@ -161,13 +182,17 @@ Loaded<Mesh> ReadLaidOut(std::string_view bytes, const std::string& path, size_t
   WeldPart& first = parts[0];
   std::vector<uint32_t> globalOf;
   for (size_t p = 1; p < partCount; ++p) {
-    globalOf.resize(parts[p].distinct);
-    for (uint32_t local = 0; local < parts[p].distinct; ++local) {
-      globalOf[local] = first.Insert(parts[p].KeyAt(local));
-    }
-    uint32_t* corners = mesh.faceCorners.data() + 3 * parts[p].firstTriangle;
-    const size_t count = 3 * (parts[p].endTriangle - parts[p].firstTriangle);
-    for (size_t i = 0; i < count; ++i) corners[i] = globalOf[corners[i]];
+    const WeldPart& part = parts[p];
+    globalOf.resize(part.distinct);
+    first.InsertAll(
+        part.distinct, [&part](size_t local) { return part.KeyAt(static_cast<uint32_t>(local)); },
+        globalOf.data());
+    // The part's corners renumbered, split over the load threads.
+    uint32_t* corners = mesh.faceCorners.data() + 3 * part.firstTriangle;
+    const size_t count = 3 * (part.endTriangle - part.firstTriangle);
+    RunRangesOnLoadThreads(LoadThreadCount(count), count, [&](int, size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) corners[i] = globalOf[corners[i]];
+    });
     parts[p].Clear();
   }
   if (owned != nullptr) owned->Free();
@@ -181,13 +206,14 @@ Loaded<Mesh> ReadLaidOut(std::string_view bytes, const std::string& path, size_t
   first.Clear();
 
   // Step 3: one face per triangle in file order.
-  mesh.faceStarts.reserve(triangles + 1);
-  mesh.edgeHidden.reserve(mesh.faceCorners.size());
-  AdviseHugePages(mesh.faceStarts);
-  AdviseHugePages(mesh.edgeHidden);
-  mesh.faceStarts.resize(triangles + 1);
-  for (size_t t = 0; t <= triangles; ++t) mesh.faceStarts[t] = static_cast<uint32_t>(t * 3);
-  mesh.edgeHidden.assign(mesh.faceCorners.size(), 0);
+  ResizeFaultedIn(mesh.faceStarts, triangles + 1);
+  ResizeFaultedIn(mesh.edgeHidden, mesh.faceCorners.size());  // zeros: no edge hidden
+  RunRangesOnLoadThreads(LoadThreadCount(triangles + 1), triangles + 1,
+                         [&mesh](int, size_t begin, size_t end) {
+                           for (size_t t = begin; t < end; ++t) {
+                             mesh.faceStarts[t] = static_cast<uint32_t>(t * 3);
+                           }
+                         });
   return mesh;
 }
 

@@ -20,8 +20,10 @@ bool BinaryStlHasColours(std::string_view bytes);
 /// Reads a binary STL of that layout into one face per triangle, in file
 /// order. Exactly equal positions become one vertex (meshoptimizer's remap,
 /// first occurrence first), so shared edges are shared in the mesh. owned,
-/// when given, holds the bytes viewed: its pages are handed back as they
-/// are read, and it is freed (empty) once the mesh has the vertices.
+/// when given, holds the bytes viewed: the records are copied out of it
+/// (FileBytes::CopyOut: pread for a mapped file, whose pages are never
+/// touched; held bytes handed back as they are read), and it is freed
+/// (empty) once the mesh has the vertices.
 /// The records are welded in runs, one a load thread, whose positions are
 /// then numbered in file order (tables of 12-byte keys, not the records).
 Loaded<Mesh> ReadBinaryStl(std::string_view bytes, const std::string& path,

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -23,6 +24,7 @@ FileBytes::FileBytes(FileBytes&& other) noexcept
       fd_(other.fd_),
       opened_(other.opened_),
       shrank_(other.shrank_),
+      copiedShort_(other.copiedShort_.load()),
       changed_(other.changed_) {
   other.mapped_ = nullptr;
   other.mappedBytes_ = 0;
@@ -40,6 +42,7 @@ FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
   fd_ = other.fd_;
   opened_ = other.opened_;
   shrank_ = other.shrank_;
+  copiedShort_ = other.copiedShort_.load();
   changed_ = other.changed_;
   other.mapped_ = nullptr;
   other.mappedBytes_ = 0;
@@ -100,6 +103,28 @@ std::string_view FileBytes::View() const {
   return text_;
 }
 
+void FileBytes::CopyOut(size_t offset, size_t count, char* dest) const {
+  const size_t size = Size();
+  const size_t inside = offset < size ? std::min(count, size - offset) : 0;
+  size_t copied = 0;
+  if (mapped_ == nullptr) {
+    std::memcpy(dest, text_.data() + offset, inside);
+    copied = inside;
+  } else {
+    while (copied < inside) {
+      const ssize_t got =
+          pread(fd_, dest + copied, inside - copied, static_cast<off_t>(offset + copied));
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) break;  // the file's end, or an error (EIO)
+      copied += static_cast<size_t>(got);
+    }
+  }
+  if (copied < count) {
+    std::memset(dest + copied, 0, count - copied);
+    copiedShort_.store(true, std::memory_order_relaxed);
+  }
+}
+
 void FileBytes::Release(size_t begin, size_t end) {
   if (mapped_ == nullptr) {
     if (end > begin && end <= text_.size()) ReleasePages(text_.data() + begin, end - begin);
@@ -138,7 +163,8 @@ std::string FileBytes::TakeString() {
 }
 
 bool FileBytes::Shrank() const {
-  return shrank_ || (mapped_ != nullptr && MappedRangeShrank(guardSlot_));
+  return shrank_ || copiedShort_.load(std::memory_order_relaxed) ||
+         (mapped_ != nullptr && MappedRangeShrank(guardSlot_));
 }
 
 bool FileBytes::ChangedSinceOpened() const {

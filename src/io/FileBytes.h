@@ -53,6 +53,14 @@ class FileBytes {
   size_t Size() const { return View().size(); }
   bool Mapped() const { return mapped_ != nullptr; }
 
+  /// Copies the bytes [offset, offset + count) to dest, for a reader that
+  /// reads each byte once, in pieces: from a mapped file with pread on its
+  /// descriptor, so the kernel copies from the page cache and the mapping's
+  /// pages are never faulted in (on this kind of machine about 3 times
+  /// cheaper than reading them through the mapping); else from the held
+  /// bytes. Bytes the file no longer has (it shrank, or reading failed) are
+  /// zeros and make Shrank() true. Safe on several threads at once.
+  void CopyOut(size_t offset, size_t count, char* dest) const;
   /// Hands back the memory of the whole pages inside [begin, end) (byte
   /// offsets): bytes already parsed that will not be read again. They read
   /// as zeros (held) or as the file again (mapped) if they are.
@@ -78,6 +86,7 @@ class FileBytes {
   int fd_ = -1;
   struct stat opened_ {};
   bool shrank_ = false;
+  mutable std::atomic<bool> copiedShort_{false};  ///< CopyOut met the file's end or an error
   bool changed_ = false;
 };
 
