@@ -166,7 +166,8 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
                                       const RenderOptions& single) {
   clipPlanes_ = MakeViewClipPlanes(fine.projection, NearDistance(scene));
   eyeWorld_ = EyePositionWorld(fine.view);
-  SampledRasterizer rasterizer(sampleFrame_, SurfaceRule(single), single.variant.wideLanes);
+  SampledRasterizer rasterizer(sampleFrame_, SurfaceRule(single), single.variant.wideLanes,
+                               single.variant.cellPairs);
   SampleSink sink(rasterizer);
   RenderStats stats;
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
