@@ -51,9 +51,6 @@ struct RenderVariant {
   /// The sampled rasterizer's 2x4 cells eight lanes at a time (AVX2) where the
   /// CPU has them; false: four at a time (SSE2). The same samples either way.
   bool wideLanes = true;
-  /// With wideLanes: 2x4 cells two at a time (AVX-512, sixteen lanes) where
-  /// the CPU has them; false: one at a time. The same samples either way.
-  bool cellPairs = true;
 };
 
 /// Everything about how a frame is drawn that is not the camera.

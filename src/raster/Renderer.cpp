@@ -166,8 +166,7 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
                                       const RenderOptions& single) {
   clipPlanes_ = MakeViewClipPlanes(fine.projection, NearDistance(scene));
   eyeWorld_ = EyePositionWorld(fine.view);
-  SampledRasterizer rasterizer(sampleFrame_, SurfaceRule(single), single.variant.wideLanes,
-                               single.variant.cellPairs);
+  SampledRasterizer rasterizer(sampleFrame_, SurfaceRule(single), single.variant.wideLanes);
   SampleSink sink(rasterizer);
   RenderStats stats;
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);

@@ -15,12 +15,11 @@ void SampleFrame::Begin(int widthCells, int heightCells, SampleGrid grid) {
   // Padding: the sampled rasterizer reads and writes back whole vectors of lanes.
   faces_.resize(cells * perCell_ + kPaddingSamples);
   depth_.resize(cells * perCell_ + kPaddingSamples);
-  cellCount_ = cells;
-  touched_.assign(cells + 1, 0);  // and the padding's
+  touched_.assign(cells, 0);
 }
 
 size_t SampleFrame::NextTouched(size_t cell) const {
-  const size_t count = cellCount_;
+  const size_t count = touched_.size();
   while (cell + 8 <= count) {
     uint64_t flags = 0;
     std::memcpy(&flags, touched_.data() + cell, sizeof flags);
@@ -33,7 +32,7 @@ size_t SampleFrame::NextTouched(size_t cell) const {
 
 void SampleFrame::CopyFrom(const CellBuffer& samples, const DepthBuffer* depth) {
   const int k = grid_.across, m = grid_.down;
-  std::fill_n(touched_.begin(), cellCount_, uint8_t{1});
+  std::fill(touched_.begin(), touched_.end(), uint8_t{1});
   size_t n = 0;
   for (int row = 0; row < heightCells_; ++row) {
     for (int col = 0; col < widthCells_; ++col) {

@@ -17,7 +17,7 @@ namespace termshade {
 /// and are neither cleared nor read (a frame clears only the flags).
 class SampleFrame {
  public:
-  /// Samples (and a touched flag) past the last cell that writers may read and write back.
+  /// Samples past the last cell that may be read and written back unchanged.
   static constexpr size_t kPaddingSamples = 8;
   /// Sizes the frame (keeping capacity) and marks every cell untouched.
   void Begin(int widthCells, int heightCells, SampleGrid grid);
@@ -25,7 +25,7 @@ class SampleFrame {
   int WidthCells() const { return widthCells_; }
   int HeightCells() const { return heightCells_; }
   SampleGrid Grid() const { return grid_; }
-  size_t CellCount() const { return cellCount_; }
+  size_t CellCount() const { return touched_.size(); }
   bool Touched(size_t cell) const { return touched_[cell] != 0; }
   /// The first touched cell at or after `cell` (eight flags a load), or CellCount().
   size_t NextTouched(size_t cell) const;
@@ -63,7 +63,6 @@ class SampleFrame {
   int heightCells_ = 0;
   SampleGrid grid_;
   size_t perCell_ = 1;
-  size_t cellCount_ = 0;
   std::vector<uint32_t> faces_;
   std::vector<float> depth_;
   std::vector<uint8_t> touched_;

@@ -5,9 +5,6 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#endif
 
 #include "raster/FixedPoint.h"
 
@@ -300,119 +297,6 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
     row01 += down01;
   }
 }
-
-// Edge e's values at sixteen samples (columns i, rows j from the origin sample),
-// 32 bits wrapping as the 64-bit values' low halves do.
-__attribute__((target("avx512f"), always_inline)) inline __m512i PairLanes(const Edge& e,
-                                                                            __m512i i,
-                                                                            __m512i j) {
-  return _mm512_add_epi32(
-      _mm512_add_epi32(_mm512_mullo_epi32(i, _mm512_set1_epi32(static_cast<int32_t>(e.stepX))),
-                       _mm512_mullo_epi32(j, _mm512_set1_epi32(static_cast<int32_t>(e.stepY)))),
-      _mm512_set1_epi32(static_cast<int32_t>(e.atOrigin)));
-}
-
-// The lanes as floats (vcvtdq2ps; the intrinsic trips GCC 12's uninitialized warning).
-typedef int32_t Int16 __attribute__((vector_size(64)));
-typedef float Float16 __attribute__((vector_size(64)));
-__attribute__((target("avx512f"), always_inline)) inline __m512 ToFloat(__m512i lanes) {
-  return reinterpret_cast<__m512>(__builtin_convertvector(reinterpret_cast<Int16>(lanes), Float16));
-}
-
-// A step of `samples` samples in every lane (32 bits, wrapping).
-__attribute__((target("avx512f"), always_inline)) inline __m512i Steps(int64_t perSample,
-                                                                        int samples) {
-  return _mm512_set1_epi32(
-      static_cast<int32_t>(static_cast<uint32_t>(perSample) * static_cast<uint32_t>(samples)));
-}
-
-// DrawCellsWide two cells at a time with AVX-512: a row's cells in pairs, one
-// register of sixteen lanes (the same integers, conversions and float
-// operations lane by lane; no FMA), coverage, depth test and the write back as
-// lane masks. A pair's second cell past the box is masked off; its memory (the
-// next cell, the next row's first, or the frame's padding) is written back as
-// read, and its touched flag is kept.
-template <int K, int M, DepthRule kRule>
-__attribute__((target("avx512f"))) void DrawCellPairs(const RasterVertex& v0,
-                                                       const RasterVertex& v1,
-                                                       const RasterVertex& v2, int64_t area,
-                                                       uint32_t faceNumber, SampleFrame& frame,
-                                                       int cellCol0, int cellCol1, int cellRow0,
-                                                       int cellRow1) {
-  static_assert(K * M == 8);
-  // Pairs from an even column: consecutive triangles reach a cell through the same 64 bytes.
-  const int pairCol0 = cellCol0 & ~1;
-  const int64_t originX = int64_t{pairCol0} * K * kFixedOne + kFixedHalf;
-  const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
-  const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
-  // Lane l: sample (l % K + K (l / 8), l % 8 / K) from the first cell's first sample.
-  alignas(64) int32_t columns[16], rows[16];
-  for (int l = 0; l < 16; ++l) {
-    columns[l] = l % 8 % K + K * (l / 8);
-    rows[l] = l % 8 / K;
-  }
-  const __m512i i = _mm512_load_si512(columns), j = _mm512_load_si512(rows);
-  const __m512i across12 = Steps(t.e12.stepX, 2 * K), across20 = Steps(t.e20.stepX, 2 * K),
-                across01 = Steps(t.e01.stepX, 2 * K);
-  const __m512i down12 = Steps(t.e12.stepY, M), down20 = Steps(t.e20.stepY, M),
-                down01 = Steps(t.e01.stepY, M);
-  const __m512 k0 = _mm512_set1_ps(t.k0), k1 = _mm512_set1_ps(t.k1), k2 = _mm512_set1_ps(t.k2);
-  const __m512i face = _mm512_set1_epi32(static_cast<int32_t>(faceNumber));
-  uint32_t* const faces = frame.FaceData();
-  float* const depth = frame.DepthData();
-  uint8_t* const touched = frame.TouchedData();
-  const size_t width = static_cast<size_t>(frame.WidthCells());
-  __m512i row12 = PairLanes(t.e12, i, j), row20 = PairLanes(t.e20, i, j),
-          row01 = PairLanes(t.e01, i, j);
-  for (int row = cellRow0; row <= cellRow1; ++row) {
-    __m512i w12 = row12, w20 = row20, w01 = row01;
-    size_t cell = row * width + pairCol0;
-    for (int col = pairCol0; col <= cellCol1; col += 2, cell += 2) {
-      // Step 1: the covered samples of the pair's cells in the box.
-      const auto inBox = static_cast<__mmask16>((col < cellCol0 ? 0xFF00 : 0xFFFF) &
-                                                (col < cellCol1 ? 0xFFFF : 0x00FF));
-      const __mmask16 covered = _mm512_mask_cmpge_epi32_mask(
-          inBox, _mm512_or_si512(_mm512_or_si512(w12, w20), w01), _mm512_setzero_si512());
-      // Step 2: by the rule, without branches; an untouched cell's samples start as background.
-      uint16_t flags = 0;  // two touched flags, 0 or 1 each
-      std::memcpy(&flags, touched + cell, sizeof flags);
-      const auto kept = static_cast<__mmask16>(flags * 0xFFU);
-      const auto reached = static_cast<uint16_t>(((covered & 0xFFU) + 0xFFU) >> 8 |
-                                                 ((covered >> 8) + 0xFFU) >> 8 << 8);
-      flags = static_cast<uint16_t>(flags | reached);
-      std::memcpy(touched + cell, &flags, sizeof flags);
-      uint32_t* const cellFaces = faces + cell * 8;
-      float* const cellDepth = depth + cell * 8;
-      __m512i storedFaces = _mm512_maskz_mov_epi32(kept, _mm512_loadu_si512(cellFaces));
-      if constexpr (kRule == DepthRule::kCoverOnly) {
-        _mm512_storeu_ps(cellDepth, _mm512_maskz_mov_ps(kept, _mm512_loadu_ps(cellDepth)));
-        storedFaces = _mm512_mask_mov_epi32(storedFaces, covered, face);
-      } else {
-        __m512 stored = _mm512_maskz_mov_ps(kept, _mm512_loadu_ps(cellDepth));
-        const __m512 w = _mm512_add_ps(
-            _mm512_add_ps(_mm512_mul_ps(ToFloat(w12), k0),
-                          _mm512_mul_ps(ToFloat(w20), k1)),
-            _mm512_mul_ps(ToFloat(w01), k2));
-        __mmask16 wins = covered;
-        if constexpr (kRule == DepthRule::kNearestWins) {
-          wins &= _mm512_cmp_ps_mask(w, stored, _CMP_GT_OQ) |
-                  (_mm512_cmp_ps_mask(w, stored, _CMP_EQ_OQ) &
-                   _mm512_cmplt_epi32_mask(face, storedFaces));
-        }
-        stored = _mm512_mask_mov_ps(stored, wins, w);
-        storedFaces = _mm512_mask_mov_epi32(storedFaces, wins, face);
-        _mm512_storeu_ps(cellDepth, stored);
-      }
-      _mm512_storeu_si512(cellFaces, storedFaces);
-      w12 = _mm512_add_epi32(w12, across12);
-      w20 = _mm512_add_epi32(w20, across20);
-      w01 = _mm512_add_epi32(w01, across01);
-    }
-    row12 = _mm512_add_epi32(row12, down12);
-    row20 = _mm512_add_epi32(row20, down20);
-    row01 = _mm512_add_epi32(row01, down01);
-  }
-}
 #endif
 
 // RasterizeTriangle's step 4 sample by sample over the box, each sample
@@ -452,7 +336,7 @@ void DrawSamples(const RasterVertex& v0, const RasterVertex& v1, const RasterVer
   }
 }
 
-template <int K, int M, DepthRule kRule, int kLanes>
+template <int K, int M, DepthRule kRule, bool kWide>
 void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                   uint32_t faceNumber, SampleFrame& frame) {
   // Step 1: the samples the bounding box holds, as RasterizeTriangle finds them.
@@ -487,12 +371,7 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
     DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
   } else {
 #if defined(TERMSHADE_WIDE_CELLS)
-    if constexpr (kLanes == 16 && K * M == 8) {
-      DrawCellPairs<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
-                                 row0 / M, row1 / M);
-      return;
-    }
-    if constexpr (kLanes == 8 && K * M == 8) {
+    if constexpr (kWide && K * M == 8) {
       DrawCellsWide<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
                                  row0 / M, row1 / M);
       return;
@@ -503,23 +382,22 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   }
 }
 
-template <int K, int M, int kLanes>
+template <int K, int M, bool kWide>
 SampledRasterizer::DrawFunction ForRule(DepthRule rule) {
   switch (rule) {
     case DepthRule::kCoverOnly:
-      return DrawTriangle<K, M, DepthRule::kCoverOnly, kLanes>;
+      return DrawTriangle<K, M, DepthRule::kCoverOnly, kWide>;
     case DepthRule::kOverwrite:
-      return DrawTriangle<K, M, DepthRule::kOverwrite, kLanes>;
+      return DrawTriangle<K, M, DepthRule::kOverwrite, kWide>;
     case DepthRule::kNearestWins:
       break;
   }
-  return DrawTriangle<K, M, DepthRule::kNearestWins, kLanes>;
+  return DrawTriangle<K, M, DepthRule::kNearestWins, kWide>;
 }
 
 template <int K, int M>
-SampledRasterizer::DrawFunction ForRule(DepthRule rule, int lanes) {
-  if (lanes == 16) return ForRule<K, M, 16>(rule);
-  return lanes == 8 ? ForRule<K, M, 8>(rule) : ForRule<K, M, 4>(rule);
+SampledRasterizer::DrawFunction ForRule(DepthRule rule, bool wide) {
+  return wide ? ForRule<K, M, true>(rule) : ForRule<K, M, false>(rule);
 }
 
 }  // namespace
@@ -537,22 +415,14 @@ bool SampledRasterizer::WideAvailable() {
 #endif
 }
 
-bool SampledRasterizer::PairsAvailable() {
-#if defined(TERMSHADE_WIDE_CELLS)
-  return __builtin_cpu_supports("avx512f") != 0;
-#else
-  return false;
-#endif
-}
-
-SampledRasterizer::SampledRasterizer(SampleFrame& frame, DepthRule rule, bool wide, bool pairs)
+SampledRasterizer::SampledRasterizer(SampleFrame& frame, DepthRule rule, bool wide)
     : frame_(frame) {
-  const int lanes = wide && pairs && PairsAvailable() ? 16 : wide && WideAvailable() ? 8 : 4;
+  wide = wide && WideAvailable();
   const SampleGrid g = frame.Grid();
-  if (g == SampleGrid{1, 2}) draw_ = ForRule<1, 2, 4>(rule);
-  if (g == SampleGrid{2, 2}) draw_ = ForRule<2, 2, 4>(rule);
-  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3, 4>(rule);
-  if (g == SampleGrid{2, 4}) draw_ = ForRule<2, 4>(rule, lanes);
+  if (g == SampleGrid{1, 2}) draw_ = ForRule<1, 2, false>(rule);
+  if (g == SampleGrid{2, 2}) draw_ = ForRule<2, 2, false>(rule);
+  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3, false>(rule);
+  if (g == SampleGrid{2, 4}) draw_ = ForRule<2, 4>(rule, wide);
 }
 
 }  // namespace termshade

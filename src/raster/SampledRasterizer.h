@@ -22,13 +22,9 @@ class SampledRasterizer {
   /// Whether this CPU runs the eight-lane (AVX2) path of 2x4 cells.
   static bool WideAvailable();
 
-  /// Whether this CPU runs the sixteen-lane (AVX-512) path: 2x4 cells two at a time.
-  static bool PairsAvailable();
-
   /// Draws into `frame` (which Begin has sized) by `rule`; grid: Supports.
-  /// wide: 2x4 cells eight lanes at a time where WideAvailable; pairs (with
-  /// wide): two cells at a time where PairsAvailable. The same samples either way.
-  SampledRasterizer(SampleFrame& frame, DepthRule rule, bool wide = true, bool pairs = true);
+  /// wide: 2x4 cells eight lanes at a time where WideAvailable (same samples).
+  SampledRasterizer(SampleFrame& frame, DepthRule rule, bool wide = true);
 
   /// One triangle, corners in sample coordinates (1/256 sample fixed point).
   void Draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
