@@ -52,8 +52,9 @@ RenderOptions ResolvedOptions(const Scene& scene, const RenderOptions& options) 
 
 // The sampled rasterizer serves cluster frames on one thread with the product's depth.
 bool DrawsSampled(const Scene& scene, const RenderOptions& single, SampleGrid grid) {
-  const bool oneThread = ResolvedThreadCount(single.threads) <= 1 ||
-                         scene.triangles.size() < single.threadsFromTriangles;
+  // The triangle count first: counting the usable cores is a system call (1.6 us here).
+  const bool oneThread = scene.triangles.size() < single.threadsFromTriangles ||
+                         ResolvedThreadCount(single.threads) <= 1;
   return single.variant.sampledRasterizer && DrawsByCluster(scene, single) &&
          !single.variant.scanline && single.variant.depthFormat == DepthFormat::kFloatInverseZ &&
          SampledRasterizer::Supports(grid) && oneThread;
@@ -172,7 +173,7 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
   BeginSeenFaces(scene);
   ListSampledFaces(scene.FaceCount());
-  ShadeSeenFaces(scene, single);
+  ShadeSeenFaces(scene, single, false);  // the glyph stage takes levels from intensities
   stats.facesVisible = EndSeenFaces();
   return stats;
 }
@@ -373,8 +374,8 @@ void Renderer::MarkSeenFaces(std::span<const uint32_t> faceNumbers) {
   for (uint32_t faceNumber : faceNumbers) MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
 }
 
-// The level and intensity of every seen face.
-void Renderer::ShadeSeenFaces(const Scene& scene, const RenderOptions& options) {
+// The intensity (and, with `levels`, the ramp level) of every seen face.
+void Renderer::ShadeSeenFaces(const Scene& scene, const RenderOptions& options, bool levels) {
   // Step 1: n.s per seen face, with n turned towards the eye, in world space.
   const Mat4& m = eyeFromWorld_;
   const Vec3 s = options.sunEye;
@@ -396,7 +397,7 @@ void Renderer::ShadeSeenFaces(const Scene& scene, const RenderOptions& options) 
         options.shade == ShadeMode::kContrast
             ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, options.ambient)
             : LambertIntensity(seenSunDots_[i], options.ambient);
-    faceLevels_[seenFaces_[i]] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
+    if (levels) faceLevels_[seenFaces_[i]] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
     const double clamped = std::isnan(intensity) ? 0.0 : std::clamp(intensity, 0.0, 1.0);
     faceIntensities_[seenFaces_[i]] = static_cast<uint8_t>(std::lround(255.0 * clamped));
   }

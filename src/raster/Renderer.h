@@ -68,7 +68,7 @@ class Renderer {
   void MarkSeenFaces(std::span<const uint32_t> faceNumbers);
   /// Lists the faces sampleFrame_ shows in seenFaces_ (between BeginSeenFaces and ShadeSeenFaces).
   void ListSampledFaces(size_t faceCount);
-  void ShadeSeenFaces(const Scene& scene, const RenderOptions& options);
+  void ShadeSeenFaces(const Scene& scene, const RenderOptions& options, bool levels = true);
   int EndSeenFaces();
 
   ViewClipPlanes clipPlanes_{};

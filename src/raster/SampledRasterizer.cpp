@@ -206,6 +206,14 @@ typedef float Float8 __attribute__((vector_size(32)));
 typedef long long Long4
     __attribute__((vector_size(32)));  // NOLINT(google-runtime-int): ptest's type
 
+// Edge e's values at eight samples (columns i, rows j from the origin sample).
+__attribute__((target("avx2"), always_inline)) inline Int8 LaneValues(const Edge& e, UInt8 i,
+                                                                       UInt8 j) {
+  return reinterpret_cast<Int8>(i * static_cast<uint32_t>(e.stepX) +
+                                j * static_cast<uint32_t>(e.stepY) +
+                                static_cast<uint32_t>(e.atOrigin));
+}
+
 template <int K, int M, DepthRule kRule>
 __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const RasterVertex& v1,
                                                    const RasterVertex& v2, int64_t area,
@@ -224,35 +232,38 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
     rows[l] = l / K;
   }
   const UInt8 i = reinterpret_cast<UInt8>(columns), j = reinterpret_cast<UInt8>(rows);
-  const auto o12 = reinterpret_cast<Int8>(i * static_cast<uint32_t>(e12.stepX) +
-                                          j * static_cast<uint32_t>(e12.stepY));
-  const auto o20 = reinterpret_cast<Int8>(i * static_cast<uint32_t>(e20.stepX) +
-                                          j * static_cast<uint32_t>(e20.stepY));
-  const auto o01 = reinterpret_cast<Int8>(i * static_cast<uint32_t>(e01.stepX) +
-                                          j * static_cast<uint32_t>(e01.stepY));
+  // The lanes' edge values at the box's first cell, and their steps a cell across and down
+  // (32 bits, wrapping as the 64-bit values' low halves do).
+  const auto across = [](const Edge& e) {
+    return static_cast<int32_t>(static_cast<uint32_t>(e.stepX) * K);
+  };
+  const auto down = [](const Edge& e) {
+    return static_cast<int32_t>(static_cast<uint32_t>(e.stepY) * M);
+  };
+  const int32_t across12 = across(e12), across20 = across(e20), across01 = across(e01);
+  const int32_t down12 = down(e12), down20 = down(e20), down01 = down(e01);
   const auto face = static_cast<int32_t>(faceNumber);
   uint32_t* const faces = frame.FaceData();
   float* const depth = frame.DepthData();
   uint8_t* const touched = frame.TouchedData();
   const size_t width = static_cast<size_t>(frame.WidthCells());
-  int64_t row12 = e12.atOrigin, row20 = e20.atOrigin, row01 = e01.atOrigin;
+  Int8 row12 = LaneValues(e12, i, j), row20 = LaneValues(e20, i, j), row01 = LaneValues(e01, i, j);
   for (int row = cellRow0; row <= cellRow1; ++row) {
-    int64_t b12 = row12, b20 = row20, b01 = row01;
+    Int8 w12 = row12, w20 = row20, w01 = row01;
     size_t cell = row * width + cellCol0;
     for (int col = cellCol0; col <= cellCol1;
-         ++col, ++cell, b12 += K * e12.stepX, b20 += K * e20.stepX, b01 += K * e01.stepX) {
-      // Step 1: the covered samples.
-      const Int8 w12 = static_cast<int32_t>(b12) + o12, w20 = static_cast<int32_t>(b20) + o20,
-                 w01 = static_cast<int32_t>(b01) + o01;
-      const Int8 covered = (w12 | w20 | w01) >= 0;
+         ++col, ++cell, w12 += across12, w20 += across20, w01 += across01) {
+      // Step 1: the covered samples (sign bits clear in all three).
+      const Int8 covered = (w12 | w20 | w01) > -1;
       // Step 2: by the rule, without branches (which the cells' coverage makes
       // unpredictable; measured after another mode's frame, 9% quicker, 5%
       // slower when the same frames repeat): a cell no sample reaches is
       // written back as it was, or as background if untouched (and stays untouched).
       const bool any = __builtin_ia32_ptestz256(reinterpret_cast<Long4>(covered),
                                                 reinterpret_cast<Long4>(covered)) == 0;
-      const Int8 kept = touched[cell] != 0 ? ~Int8{} : Int8{};
-      touched[cell] |= static_cast<uint8_t>(any);
+      const uint8_t wasTouched = touched[cell];
+      const Int8 kept = Int8{} - static_cast<int32_t>(wasTouched);  // flags are 0 or 1
+      touched[cell] = wasTouched | static_cast<uint8_t>(any);
       uint32_t* const cellFaces = faces + cell * 8;
       float* const cellDepth = depth + cell * 8;
       Int8 storedFaces;
@@ -265,9 +276,9 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
         std::memcpy(cellDepth, &storedDepth, sizeof storedDepth);
         storedFaces = covered ? face : storedFaces;
       } else {
-        Float8 stored;
-        std::memcpy(&stored, cellDepth, sizeof stored);
-        stored = kept ? stored : Float8{};
+        Int8 storedBits;
+        std::memcpy(&storedBits, cellDepth, sizeof storedBits);
+        const auto stored = reinterpret_cast<Float8>(storedBits & kept);
         const Float8 w = __builtin_convertvector(w12, Float8) * t.k0 +
                          __builtin_convertvector(w20, Float8) * t.k1 +
                          __builtin_convertvector(w01, Float8) * t.k2;
@@ -275,15 +286,15 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
         if constexpr (kRule == DepthRule::kNearestWins) {
           wins &= (w > stored) | ((w == stored) & (face < storedFaces));
         }
-        stored = wins ? w : stored;
+        const Float8 nearest = wins ? w : stored;
         storedFaces = wins ? face : storedFaces;
-        std::memcpy(cellDepth, &stored, sizeof stored);
+        std::memcpy(cellDepth, &nearest, sizeof nearest);
       }
       std::memcpy(cellFaces, &storedFaces, sizeof storedFaces);
     }
-    row12 += M * e12.stepY;
-    row20 += M * e20.stepY;
-    row01 += M * e01.stepY;
+    row12 += down12;
+    row20 += down20;
+    row01 += down01;
   }
 }
 #endif
