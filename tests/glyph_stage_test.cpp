@@ -134,6 +134,42 @@ TEST(AsciiMatcher, ShapeLevelsAreExactForEveryValueAndBrightest) {
   }
 }
 
+// 2x4 cells search four glyphs at a time: the same glyph as the plain search,
+// for random sample vectors and for every one- and two-level vector (where
+// ties between glyphs are most likely).
+TEST(AsciiMatcher, EightSampleSearchEqualsThePlainSearch) {
+  AsciiMatcher matcher;
+  matcher.Prepare({2, 4});
+  std::mt19937 random(7);
+  auto check = [&](const std::array<uint8_t, 8>& values, uint32_t covered) {
+    std::array<uint8_t, 32> inkLevels{};
+    for (int n = 0; n < 8; ++n) {
+      if ((covered >> n) & 1U) inkLevels[n] = static_cast<uint8_t>((values[n] * 15 + 127) / 255);
+    }
+    ASSERT_EQ(matcher.MatchInk(values.data(), covered), matcher.Nearest(inkLevels));
+    ASSERT_EQ(matcher.MatchShape(values.data(), covered),
+              matcher.Nearest(AsciiMatcher::ShapeLevels(values.data(), covered, 8)));
+  };
+  for (int i = 0; i < 100000; ++i) {
+    std::array<uint8_t, 8> values{};
+    for (uint8_t& v : values) v = static_cast<uint8_t>(random());
+    check(values, random() & 0xFFU);
+    if (HasFatalFailure()) return;
+  }
+  for (uint32_t pattern = 0; pattern < 256; ++pattern) {
+    for (int low = 0; low < 256; low += 17) {
+      for (int high = low; high < 256; high += 17) {
+        std::array<uint8_t, 8> values{};
+        for (int n = 0; n < 8; ++n)
+          values[n] = static_cast<uint8_t>((pattern >> n) & 1U ? high : low);
+        check(values, 0xFFU);
+        check(values, pattern);
+        if (HasFatalFailure()) return;
+      }
+    }
+  }
+}
+
 TEST(GlyphStage, EqualsTheReferenceStageOnTheShippedScenes) {
   for (const char* name : {"sphere_cone", "beams", "surface"}) {
     const Scene scene = test::LoadScene(std::string("data/") + name + ".dat");

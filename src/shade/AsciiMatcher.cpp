@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include "shade/GlyphInk.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace termshade {
 
@@ -19,6 +24,9 @@ constexpr int kProbes = 8;
 // Contrast enhancement (Harri): levels below the cell's brightest are pushed
 // down by (level / max)^exponent, sharpening edges inside the cell.
 constexpr double kContrastExponent = 1.5;
+// A missing glyph's ink in Nearest8's last block: its error (8 x 2000^2)
+// beats no real one (at most 8 x 255^2) and cannot overflow 32 bits.
+constexpr int16_t kNoGlyphInk = 2000;
 
 // ceil(2^24 / d): (x * kReciprocals[d]) >> 24 is x / d for x < 2^12 and d < 2^8
 // (the error x (ceil(2^24/d) - 2^24/d) / 2^24 < x d / 2^24 < 1/d).
@@ -61,6 +69,17 @@ void AsciiMatcher::Prepare(SampleGrid grid) {
       const int area = std::max(1, (x1 - x0) * (y1 - y0));
       const int mean = (sum + area / 2) / area;
       vectors_.push_back(mean);
+    }
+  }
+  pairedInks_.clear();
+  if (count_ == 8) {
+    const size_t blocks = (glyphs_.size() + 3) / 4;
+    pairedInks_.assign(blocks * 4 * 8, kNoGlyphInk);
+    for (size_t g = 0; g < glyphs_.size(); ++g) {
+      for (size_t n = 0; n < 8; ++n) {
+        const size_t at = ((g / 4) * 4 + n / 2) * 8 + (g % 4) * 2 + n % 2;
+        pairedInks_[at] = static_cast<int16_t>(vectors_[g * 8 + n]);
+      }
     }
   }
   // The brightest glyph's mean ink: what full intensity maps to (SPEC 12's ink range).
@@ -162,7 +181,7 @@ char32_t AsciiMatcher::MatchKey(uint64_t key, const std::array<uint8_t, 32>* lev
     if (levels != nullptr) return Nearest(*levels);
     std::array<uint8_t, 32> bytes{};  // up to 8 samples: the key's bytes
     std::memcpy(bytes.data(), &key, sizeof key);
-    return Nearest(bytes);
+    return count_ == 8 ? Nearest8(bytes) : Nearest(bytes);
   };
   const size_t home = Mix(key) & (kCacheSize - 1);
   for (int probe = 0; probe < kProbes; ++probe) {
@@ -178,14 +197,58 @@ char32_t AsciiMatcher::MatchKey(uint64_t key, const std::array<uint8_t, 32>* lev
   return entry.glyph;
 }
 
-char32_t AsciiMatcher::Nearest(const std::array<uint8_t, 32>& levels) const {
-  // The target ink per region: enhanced brightness scaled to the most ink any glyph has there.
+std::array<int, 32> AsciiMatcher::TargetInk(const std::array<uint8_t, 32>& levels) const {
+  // Enhanced brightness scaled to the most ink any glyph has there.
   int maxLevel = 0;
   for (int n = 0; n < count_; ++n) maxLevel = std::max<int>(maxLevel, levels[n]);
   std::array<int, 32> target{};
   for (int n = 0; n < count_; ++n) {
     target[n] = enhanced_[levels[n]][maxLevel] * inkScale_ / 255;
   }
+  return target;
+}
+
+char32_t AsciiMatcher::Nearest8(const std::array<uint8_t, 32>& levels) const {
+#if defined(__SSE2__)
+  const std::array<int, 32> target = TargetInk(levels);
+  // Per pair of regions, the two targets in every glyph's two lanes.
+  auto pairOf = [&target](size_t k) {
+    const auto low = static_cast<uint32_t>(target[2 * k]);
+    const auto high = static_cast<uint32_t>(target[2 * k + 1]);
+    return _mm_set1_epi32(static_cast<int>(low | high << 16));
+  };
+  const __m128i targets0 = pairOf(0), targets1 = pairOf(1), targets2 = pairOf(2),
+                targets3 = pairOf(3);
+  int bestError = INT32_MAX;
+  size_t best = 0;
+  const size_t blocks = pairedInks_.size() / 32;
+  for (size_t b = 0; b < blocks; ++b) {
+    // Four glyphs' squared errors: differences of 16-bit lanes, summed in pairs (madd).
+    const int16_t* const inks = pairedInks_.data() + b * 32;
+    auto squares = [inks](size_t k, __m128i targets) {
+      const __m128i difference =
+          _mm_sub_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(inks + k * 8)), targets);
+      return _mm_madd_epi16(difference, difference);
+    };
+    const __m128i sum = _mm_add_epi32(_mm_add_epi32(squares(0, targets0), squares(1, targets1)),
+                                      _mm_add_epi32(squares(2, targets2), squares(3, targets3)));
+    alignas(16) std::array<int32_t, 4> errors{};
+    _mm_store_si128(reinterpret_cast<__m128i*>(errors.data()), sum);
+    for (size_t j = 0; j < 4; ++j) {
+      if (errors[j] < bestError) {  // strict: the lower code point keeps a tie
+        bestError = errors[j];
+        best = b * 4 + j;
+      }
+    }
+  }
+  return glyphs_.empty() ? U'.' : glyphs_[best];
+#else
+  return Nearest(levels);
+#endif
+}
+
+char32_t AsciiMatcher::Nearest(const std::array<uint8_t, 32>& levels) const {
+  const std::array<int, 32> target = TargetInk(levels);
   int64_t bestError = INT64_MAX;
   char32_t best = U'.';
   for (size_t g = 0; g < glyphs_.size(); ++g) {

@@ -42,6 +42,10 @@ class AsciiMatcher {
     char32_t glyph = 0;  // 0: empty
   };
   char32_t Match(const std::array<uint8_t, 32>& levels);
+  /// Nearest for 8 samples, four glyphs at a time (SSE2 where built for it): the same glyph.
+  char32_t Nearest8(const std::array<uint8_t, 32>& levels) const;
+  /// The target ink per region of Nearest's search.
+  std::array<int, 32> TargetInk(const std::array<uint8_t, 32>& levels) const;
   /// Match for a cache key (the levels as bytes, the second eight in the high nibbles).
   char32_t MatchKey(uint64_t key, const std::array<uint8_t, 32>* levels);
   /// Up to 8 samples: the levels as bytes of a key, level = row[value], 0 where not covered.
@@ -51,7 +55,11 @@ class AsciiMatcher {
   int count_ = 0;
   std::vector<char32_t> glyphs_;
   std::vector<int> vectors_;  ///< glyph-major: count_ region inks, 0..255
-  int inkScale_ = 0;          ///< the most mean ink a glyph has, 0..255
+  /// 8 samples: the inks in blocks of four glyphs, per pair of regions k the
+  /// 16-bit lanes (glyph 0 region 2k, glyph 0 region 2k + 1, glyph 1 ...);
+  /// missing glyphs of the last block far from any target.
+  std::vector<int16_t> pairedInks_;
+  int inkScale_ = 0;  ///< the most mean ink a glyph has, 0..255
   std::array<std::array<int, kLevels>, kLevels> enhanced_{};  ///< [level][cell's max level]
   std::vector<Entry> cache_;
   std::array<uint8_t, 256> inkLevels_{};  ///< MatchInk's level by value
