@@ -1,11 +1,13 @@
 #include "FidelityBench.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "MethodsBench.h"
@@ -97,7 +99,8 @@ RenderOptions OptionsFor(const ModeCase& c) {
 }
 
 // Median frame time of every case in ms, the cases interleaved (one frame of
-// each in turn) so that load from other processes falls on all of them alike.
+// each in turn, in a shuffled order) so that load from other processes falls
+// on all of them alike.
 std::vector<double> MedianFrameMs(const NamedScene& named, const std::vector<ModeCase>& cases,
                                   const std::vector<Camera>& cameras,
                                   const FidelityBenchOptions& bench) {
@@ -118,9 +121,15 @@ std::vector<double> MedianFrameMs(const NamedScene& named, const std::vector<Mod
   }
   const auto deadline =
       Clock::now() + std::chrono::duration<double>(bench.secondsPerCase * cases.size());
+  // A new order of the cases every round (fixed seed): no case always runs
+  // straight after the same one, warm from its sibling's code and data.
+  std::vector<size_t> order(cases.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::mt19937 shuffle(12345);
   for (int round = 0; round < 10 || (Clock::now() < deadline && round < 20000); ++round) {
+    std::shuffle(order.begin(), order.end(), shuffle);
     for (const Camera& camera : cameras) {
-      for (size_t i = 0; i < cases.size(); ++i) {
+      for (const size_t i : order) {
         const RenderOptions options = OptionsFor(cases[i]);
         const auto start = Clock::now();
         timed[i].renderer.Render(named.scene, camera, options, timed[i].depth, timed[i].cells);
