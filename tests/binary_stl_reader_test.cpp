@@ -107,6 +107,30 @@ TEST(BinaryStlReader, RefusesAnythingButTheExactLayout) {
   EXPECT_NE(read.Error().ToString().find("lying.stl"), std::string::npos);
 }
 
+// A binary STL cut short or padded is no STL the importer knows either: the
+// message says what the size should be. ASCII STLs and exact layouts pass.
+TEST(BinaryStlReader, SaysHowAMisSizedFileMissesItsLayout) {
+  const std::string bytes = ExportMesh(GenerateTriangleSphere(200), ExportFormat::kStl);
+  uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, sizeof count);
+  const std::string expected = std::to_string(84 + 50 * uint64_t{count});
+  const auto cut = MisSizedBinaryStl(bytes.substr(0, bytes.size() - 75), "cut.stl");
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(cut->file, "cut.stl");
+  EXPECT_EQ(cut->message, "binary STL header counts " + std::to_string(count) +
+                              " triangles, so 84 + 50 x " + std::to_string(count) + " = " +
+                              expected + " bytes, but the file has " +
+                              std::to_string(bytes.size() - 75) + " (cut short?)");
+  const auto padded = MisSizedBinaryStl(bytes + "xy", "padded.stl");
+  ASSERT_TRUE(padded.has_value());
+  EXPECT_NE(padded->message.find("(bytes after the last triangle)"), std::string::npos);
+  const auto tiny = MisSizedBinaryStl(std::string(10, 'x'), "tiny.stl");
+  ASSERT_TRUE(tiny.has_value());
+  EXPECT_NE(tiny->message.find("too short for a binary one: 10 bytes"), std::string::npos);
+  EXPECT_FALSE(MisSizedBinaryStl(bytes, "exact.stl").has_value());
+  EXPECT_FALSE(MisSizedBinaryStl("  solid x\nendsolid x\n", "ascii.stl").has_value());
+}
+
 TEST(BinaryStlReader, AnEmptyFileIsAnError) {
   const std::string bytes(84, '\0');
   ASSERT_TRUE(IsBinaryStlLayout(bytes));

@@ -70,6 +70,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "the header promises 900000000 vertices and 90000000 faces"},
         BadModel{"ply_header_claims_2e9_vertices.ply",
                  "the header promises 2000000000 vertex, 1 face, more than the 27 bytes"},
+        BadModel{"ply_header_claims_2to64_minus_1_vertices.ply",
+                 "the header promises 18446744073709551615 vertex, more than"},
+        BadModel{"stl_binary_cut_short.stl",
+                 "binary STL header counts 1000 triangles, so 84 + 50 x 1000 = 50084 bytes, but "
+                 "the file has 259 (cut short?)"},
         BadModel{"off_counts_beyond_file_size.off", "the header promises 353535235358 vertices"},
         BadModel{"off_header_counts_huge.off", "the header promises 900000000 vertices"},
         BadModel{"obj_mtllib_absolute_path.obj", "refused to read '/etc/passwd': an absolute path"},

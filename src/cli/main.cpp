@@ -3,6 +3,7 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <iostream>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "TerminalBench.h"
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
+#include "cli/NumberChecks.h"
 #include "cli/RenderCommand.h"
 #include "geometry/Angle.h"
 #include "geometry/HeapPolicy.h"
@@ -74,12 +76,16 @@ void AddSizeOption(CLI::App& command, RenderCommandOptions& options) {
       .add_option_function<std::string>(
           "--size",
           [&options](const std::string& text) {
-            static const std::regex kSize("([0-9]{1,5})x([0-9]{1,5})");
+            static const std::regex kSize("([0-9]+)x([0-9]+)");
             std::smatch match;
             if (!std::regex_match(text, match, kSize)) {
               throw CLI::ValidationError("--size", "expected COLSxROWS, e.g. 80x24");
             }
-            const int cols = std::stoi(match[1]), rows = std::stoi(match[2]);
+            // More than 9 digits is out of range anyway (and past what stoi takes).
+            auto count = [](const std::string& digits) {
+              return digits.size() > 9 ? INT32_MAX : std::stoi(digits);
+            };
+            const int cols = count(match[1]), rows = count(match[2]);
             if (cols < 1 || rows < 1 || cols > 4096 || rows > 2048) {
               throw CLI::ValidationError("--size", "COLS must be 1..4096 and ROWS 1..2048");
             }
@@ -141,7 +147,7 @@ void AddMemoryBudgetOption(CLI::App& command, size_t& budgetBytes) {
 void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
   AddSizeOption(command, options);
   command.add_option("--cell-aspect", options.cellAspect, "cell height / cell width (default 2.0)")
-      ->check(CLI::Range(0.25, 8.0));
+      ->check(termshade::FiniteIn(0.25, 8.0));
   AddAngleOption(command, "--theta", options.theta,
                  "eye azimuth about the up axis, radians or Ndeg (default 0.3)");
   AddAngleOption(command, "--phi", options.phi,
@@ -149,7 +155,7 @@ void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
   command
       .add_option("--rho", options.rho,
                   "eye distance, model units (default 3 x 0.6 x bounding-box diagonal)")
-      ->check(CLI::PositiveNumber);
+      ->check(termshade::FinitePositive());
 }
 
 void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
@@ -232,7 +238,7 @@ int Run(int argc, char** argv) {
       ->type_name("MODEL");
   app.add_option("--cell-aspect", viewerAspect,
                  "cell height / cell width (default: from the terminal, else 2.0)")
-      ->check(CLI::Range(0.25, 8.0));
+      ->check(termshade::FiniteIn(0.25, 8.0));
   AddLookOptions(app, viewerLook);
   AddUpOption(app, viewerLook.upAxis);
   AddMemoryBudgetOption(app, viewerLook.memoryBudgetBytes);
@@ -304,11 +310,11 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(4, 500));
   terminalCommand
       ->add_option("--idle-seconds", terminalBench.idleSeconds, "idle period (default 10)")
-      ->check(CLI::Range(0.5, 600.0));
+      ->check(termshade::FiniteIn(0.5, 600.0));
   terminalCommand
       ->add_option("--turntable-seconds", terminalBench.turntableSeconds,
                    "turntable period (default 4)")
-      ->check(CLI::Range(0.5, 600.0));
+      ->check(termshade::FiniteIn(0.5, 600.0));
   terminalCommand->add_flag("!--no-strace", terminalBench.traceWrites,
                             "do not count write() calls");
   terminalCommand->add_option("--lod", terminalBench.lod, "the viewer's --lod: auto or off")
@@ -317,7 +323,7 @@ int Run(int argc, char** argv) {
       ->add_option("--settle-seconds", terminalBench.settleSeconds,
                    "wait after the first screen before measuring, for a big model's load and "
                    "levels of detail (default 0)")
-      ->check(CLI::Range(0.0, 600.0));
+      ->check(termshade::FiniteIn(0.0, 600.0));
 
   termshade::MethodsBenchOptions methodsBench;
   CLI::App* methodsCommand = benchCommand->add_subcommand(
@@ -328,7 +334,7 @@ int Run(int argc, char** argv) {
   methodsCommand
       ->add_option("--seconds", methodsBench.secondsPerCase,
                    "timing budget per method and scene (default 0.3)")
-      ->check(CLI::Range(0.01, 60.0));
+      ->check(termshade::FiniteIn(0.01, 60.0));
   methodsCommand
       ->add_option("--csv", methodsBench.csvPath, "CSV output (default bench-methods.csv)")
       ->type_name("FILE");
@@ -385,7 +391,7 @@ int Run(int argc, char** argv) {
   fidelityCommand
       ->add_option("--seconds", fidelityBench.secondsPerCase,
                    "timing budget per mode and scene (default 0.2)")
-      ->check(CLI::Range(0.01, 60.0));
+      ->check(termshade::FiniteIn(0.01, 60.0));
   fidelityCommand
       ->add_option("--csv", fidelityBench.csvPath, "CSV output (default bench-fidelity.csv)")
       ->type_name("FILE");

@@ -223,6 +223,25 @@ bool IsBinaryStlLayout(std::string_view bytes) {
   return LaidOutTriangleCount(bytes).has_value();
 }
 
+std::optional<LoadError> MisSizedBinaryStl(std::string_view bytes, const std::string& path) {
+  if (IsBinaryStlLayout(bytes)) return std::nullopt;
+  const size_t text = bytes.find_first_not_of(" \t\r\n\f\v");
+  if (text != std::string_view::npos && bytes.substr(text, 5) == "solid") return std::nullopt;
+  if (bytes.size() < kFirstRecord) {
+    return LoadError{path, 0, 0,
+                     "not an ASCII STL (no 'solid') and too short for a binary one: " +
+                         std::to_string(bytes.size()) + " bytes, its header alone takes " +
+                         std::to_string(kFirstRecord)};
+  }
+  const uint32_t count = TriangleCount(bytes);
+  const uint64_t expected = kFirstRecord + uint64_t{count} * kRecordBytes;
+  return LoadError{path, 0, 0,
+                   "binary STL header counts " + std::to_string(count) + " triangles, so 84 + 50 x " +
+                       std::to_string(count) + " = " + std::to_string(expected) +
+                       " bytes, but the file has " + std::to_string(bytes.size()) +
+                       (bytes.size() < expected ? " (cut short?)" : " (bytes after the last triangle)")};
+}
+
 bool BinaryStlHasColours(std::string_view bytes) {
   return bytes.substr(0, kHeaderBytes).find("COLOR=") != std::string_view::npos;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -12,6 +13,12 @@ namespace termshade {
 /// True when the bytes have the exact layout of a binary STL: an 80-byte
 /// header, a little-endian uint32 triangle count n, then n records of 50 bytes.
 bool IsBinaryStlLayout(std::string_view bytes);
+
+/// For bytes that are neither a binary STL's exact layout nor an ASCII
+/// STL's ("solid" first, as the importer tells them): the error saying how
+/// the size misses the layout its triangle count gives (a file cut short,
+/// or bytes after the last record). Nothing for every other file.
+std::optional<LoadError> MisSizedBinaryStl(std::string_view bytes, const std::string& path);
 
 /// True when the header asks for per-face colours (Materialise "COLOR="),
 /// which the importer decodes; the fast reader leaves such files to it.

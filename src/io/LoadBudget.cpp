@@ -48,15 +48,29 @@ class Tokens {
   size_t pos_ = 0;
 };
 
+// A header count: its value, and the digits the file wrote for messages
+// (a double would print 2^64 - 1 as 2^64).
+struct HeaderCount {
+  double value = 0;
+  std::string text;
+};
+
 // A count as an importer reads it from a header: the number the token
 // begins with ("900./x" is 900, as Assimp's atoi-like parsers take it);
 // nullopt when it begins with none.
-std::optional<double> Count(std::string_view token) {
+std::optional<HeaderCount> Count(std::string_view token) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   double value = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec != std::errc() || end == token.data()) return std::nullopt;
-  return value;
+  const std::string_view number = token.substr(0, static_cast<size_t>(end - token.data()));
+  const bool digits =
+      !number.empty() && std::all_of(number.begin(), number.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) != 0;
+      });
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f", value);
+  return HeaderCount{value, digits ? std::string(number) : std::string(text)};
 }
 
 std::string Plain(double count) {
@@ -72,11 +86,11 @@ std::optional<std::string> CheckOff(std::string_view bytes) {
   const auto vertices = Count(tokens.Next(true));
   const auto faces = Count(tokens.Next(true));
   if (!vertices || !faces) return std::nullopt;
-  if (*vertices < 0 || *faces < 0) return "the header's vertex or face count is negative";
+  if (vertices->value < 0 || faces->value < 0) return "the header's vertex or face count is negative";
   // Smallest body: a vertex is at least "0 0 0\n", a face at least "0\n".
   const double body = static_cast<double>(bytes.size() - std::min(bytes.size(), tokens.Position()));
-  if (*vertices * 6 + *faces * 2 > body) {
-    return "the header promises " + Plain(*vertices) + " vertices and " + Plain(*faces) +
+  if (vertices->value * 6 + faces->value * 2 > body) {
+    return "the header promises " + vertices->text + " vertices and " + faces->text +
            " faces, more than the " + Plain(body) + " bytes after it can hold";
   }
   return std::nullopt;
@@ -104,7 +118,7 @@ std::optional<std::string> CheckPly(std::string_view bytes) {
   // Per element: its count and the fewest bytes one of it takes.
   struct Element {
     std::string name;
-    double count = 0;
+    HeaderCount count;
     double minBytes = 0;
   };
   std::vector<Element> elements;
@@ -115,7 +129,7 @@ std::optional<std::string> CheckPly(std::string_view bytes) {
       const std::string_view name = tokens.Next(false);
       const auto count = Count(tokens.Next(false));
       if (!count) return std::nullopt;
-      if (*count < 0) return "element '" + std::string(name) + "' has a negative count";
+      if (count->value < 0) return "element '" + std::string(name) + "' has a negative count";
       elements.push_back({std::string(name), *count, 0});
     } else if (word == "property" && !elements.empty()) {
       const std::string_view type = tokens.Next(false);
@@ -128,11 +142,13 @@ std::optional<std::string> CheckPly(std::string_view bytes) {
     }
   }
   double needed = 0;
-  for (const Element& element : elements) needed += element.count * std::max(element.minBytes, 1.0);
+  for (const Element& element : elements) {
+    needed += element.count.value * std::max(element.minBytes, 1.0);
+  }
   if (needed > body) {
     std::string counts;
     for (const Element& element : elements) {
-      counts += (counts.empty() ? "" : ", ") + Plain(element.count) + " " + element.name;
+      counts += (counts.empty() ? "" : ", ") + element.count.text + " " + element.name;
     }
     return "the header promises " + counts + ", more than the " + Plain(body) +
            " bytes after it can hold";

@@ -13,6 +13,7 @@ std::optional<Loaded<Mesh>> ReadByFormat(std::string_view bytes, const std::stri
                                          const std::string& displayName, size_t memoryBudgetBytes,
                                          FileBytes* owned) {
   if (format == "stl") {
+    if (auto misSized = MisSizedBinaryStl(bytes, displayName)) return Loaded<Mesh>(*misSized);
     if (!IsBinaryStlLayout(bytes) || BinaryStlHasColours(bytes)) return std::nullopt;
     return ReadBinaryStl(bytes, displayName, owned);
   }
