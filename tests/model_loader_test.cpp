@@ -96,7 +96,8 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(ModelLoader, AFolderIsNotAModel) {
-  EXPECT_EQ(ErrorOf("tests/models"), SourcePath("tests/models") + ": not a regular file but a folder");
+  EXPECT_EQ(ErrorOf("tests/models"),
+            SourcePath("tests/models") + ": not a regular file but a folder");
 }
 
 TEST(ModelLoader, AFifoIsRefusedWithoutBlocking) {

@@ -235,11 +235,12 @@ std::optional<LoadError> MisSizedBinaryStl(std::string_view bytes, const std::st
   }
   const uint32_t count = TriangleCount(bytes);
   const uint64_t expected = kFirstRecord + uint64_t{count} * kRecordBytes;
-  return LoadError{path, 0, 0,
-                   "binary STL header counts " + std::to_string(count) + " triangles, so 84 + 50 x " +
-                       std::to_string(count) + " = " + std::to_string(expected) +
-                       " bytes, but the file has " + std::to_string(bytes.size()) +
-                       (bytes.size() < expected ? " (cut short?)" : " (bytes after the last triangle)")};
+  return LoadError{
+      path, 0, 0,
+      "binary STL header counts " + std::to_string(count) + " triangles, so 84 + 50 x " +
+          std::to_string(count) + " = " + std::to_string(expected) + " bytes, but the file has " +
+          std::to_string(bytes.size()) +
+          (bytes.size() < expected ? " (cut short?)" : " (bytes after the last triangle)")};
 }
 
 bool BinaryStlHasColours(std::string_view bytes) {

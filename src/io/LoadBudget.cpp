@@ -64,10 +64,9 @@ std::optional<HeaderCount> Count(std::string_view token) {
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec != std::errc() || end == token.data()) return std::nullopt;
   const std::string_view number = token.substr(0, static_cast<size_t>(end - token.data()));
-  const bool digits =
-      !number.empty() && std::all_of(number.begin(), number.end(), [](char c) {
-        return std::isdigit(static_cast<unsigned char>(c)) != 0;
-      });
+  const bool digits = !number.empty() && std::all_of(number.begin(), number.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+  });
   char text[32];
   std::snprintf(text, sizeof text, "%.0f", value);
   return HeaderCount{value, digits ? std::string(number) : std::string(text)};
@@ -86,7 +85,8 @@ std::optional<std::string> CheckOff(std::string_view bytes) {
   const auto vertices = Count(tokens.Next(true));
   const auto faces = Count(tokens.Next(true));
   if (!vertices || !faces) return std::nullopt;
-  if (vertices->value < 0 || faces->value < 0) return "the header's vertex or face count is negative";
+  if (vertices->value < 0 || faces->value < 0)
+    return "the header's vertex or face count is negative";
   // Smallest body: a vertex is at least "0 0 0\n", a face at least "0\n".
   const double body = static_cast<double>(bytes.size() - std::min(bytes.size(), tokens.Position()));
   if (vertices->value * 6 + faces->value * 2 > body) {

@@ -3,6 +3,7 @@
 #include <curses.h>
 #include <fcntl.h>
 #include <sys/ioctl.h>
+#include <term.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -85,6 +86,12 @@ void ForEachFatalSignal(PerSignal perSignal) {
   }
 }
 
+// The terminal saves and restores the shell's screen around the viewer (smcup).
+bool HasAlternateScreen() {
+  const char* enter = tigetstr("smcup");
+  return enter != nullptr && enter != reinterpret_cast<char*>(-1) && *enter != '\0';
+}
+
 }  // namespace
 
 std::optional<std::string> TerminalProblem() {
@@ -154,6 +161,11 @@ TerminalSession::~TerminalSession() {
   if (inputPad_ != nullptr) delwin(static_cast<WINDOW*>(inputPad_));
   if (screen_ != nullptr) {
     mousemask(0, nullptr);
+    // Without an alternate screen the last frame would stay among the shell's lines.
+    if (!HasAlternateScreen()) {
+      clear();
+      refresh();
+    }
     endwin();
     delscreen(static_cast<SCREEN*>(screen_));
     RestoreSignalHandlers();

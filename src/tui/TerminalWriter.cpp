@@ -187,6 +187,8 @@ std::string TerminalWriter::ResetSequence() {
   AppendCapability(out, "cnorm");
   AppendCapability(out, "rmkx");
   AppendCapability(out, "rmcup");
+  // Without an alternate screen the last frame would stay among the shell's lines.
+  if (*Capability("rmcup") == '\0') AppendCapability(out, "clear");
   return out;
 }
 

@@ -486,7 +486,8 @@ wait_for 'exit=2' 5 >/dev/null && pass || fail "block ramp in the C locale: exit
 
 # 13b. Old terminal descriptions: vt100's strings carry padding ($<5>),
 # which must not reach the screen; ansi would scroll on its bottom-right
-# cell, so the status line ends one cell early there.
+# cell, so the status line ends one cell early there; neither has an
+# alternate screen.
 for term in vt100 ansi; do
   run "clear; TERM=$term $bin"
   wait_for '\? help' 5 >/dev/null || fail "viewer did not start as $term"
@@ -495,6 +496,10 @@ for term in vt100 ansi; do
   if screen | tail -n 1 | grep -qE '\? help ?$'; then pass; else fail "status line cut as $term"; fi
   tm send-keys -t v q
   wait_for '^\$ ?$' 5 >/dev/null
+  # No alternate screen there: quitting clears the frame and the status line.
+  if [ "$(screen | grep -cvE '^(\$ ?)? *$')" -eq 0 ]; then pass; else
+    fail "frame left on the screen after quitting as $term: $(screen | grep -vE '^ *$' | head -n 3)"
+  fi
 done
 
 # 14. SGR (1006) mouse reports, which xterm-256color's terminfo asks for:
