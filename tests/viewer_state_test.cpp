@@ -298,6 +298,23 @@ TEST(LineEditor, AssemblesUtf8AndCountsCodePoints) {
   EXPECT_EQ(editor.Text(), "caf/\xE2\x96\x91.datx");
 }
 
+// A completed file name keeps the bytes typing would drop (the file must
+// open), shown as '?' and given back as they were; typing still drops them.
+TEST(LineEditor, CompletedNamesKeepControlAndInvalidBytes) {
+  LineEditor editor;
+  const std::string name = "evil\x1b[31mRED\x1b]0;pwned\x07 caf\xC3\xA9 \xFF\xC3.obj";
+  editor.SetText(name);
+  EXPECT_EQ(editor.Text(), name);
+  EXPECT_EQ(editor.Cursor(), editor.CodePoints().size());
+  size_t raw = 0;
+  for (const char32_t c : editor.CodePoints()) raw += LineEditor::IsRawByte(c) ? 1 : 0;
+  EXPECT_EQ(raw, 5U);  // two ESC, BEL, 0xFF and the cut-short 0xC3
+  Type(editor, "\x1b");
+  EXPECT_EQ(editor.Text(), name);
+  editor.Backspace();  // the last code point, '.obj''s j
+  EXPECT_EQ(editor.Text(), name.substr(0, name.size() - 1));
+}
+
 TEST(PromptPath, TrimsUnquotesAndExpandsHome) {
   EXPECT_EQ(PromptPath("  data/cube.dat \t", "/home/ann"), "data/cube.dat");
   EXPECT_EQ(PromptPath("'/tmp/my models/cube.dat' ", "/home/ann"), "/tmp/my models/cube.dat");

@@ -51,9 +51,15 @@ void LineEditor::Insert(char32_t codePoint) {
 }
 
 std::string LineEditor::Text() const {
-  std::string utf8;
-  for (char32_t c : text_) AppendUtf8(utf8, c);
-  return utf8;
+  std::string bytes;
+  for (char32_t c : text_) {
+    if (IsRawByte(c)) {
+      bytes += static_cast<char>(c - kRawByteBase);
+    } else {
+      AppendUtf8(bytes, c);
+    }
+  }
+  return bytes;
 }
 
 void LineEditor::Backspace() {
@@ -82,9 +88,26 @@ void LineEditor::Clear() {
   pending_.clear();
 }
 
-void LineEditor::SetText(std::string_view utf8) {
+void LineEditor::SetText(std::string_view bytes) {
   Clear();
-  for (char c : utf8) InsertByte(static_cast<unsigned char>(c));
+  for (size_t i = 0; i < bytes.size();) {
+    // A printable code point in valid UTF-8 as typed; any other byte raw.
+    const auto lead = static_cast<unsigned char>(bytes[i]);
+    const size_t length = lead < 0x80 ? 1 : SequenceBytes(lead);
+    if (length > 0 && i + length <= bytes.size()) {
+      const auto decoded = DecodeUtf8(bytes.substr(i, length));
+      if (decoded && decoded->size() == 1 && !IsControl(decoded->front())) {
+        Insert(decoded->front());
+        i += length;
+        continue;
+      }
+    }
+    if (text_.size() < kMaxCodePoints) {
+      text_.insert(text_.begin() + static_cast<std::ptrdiff_t>(cursor_), kRawByteBase + lead);
+      ++cursor_;
+    }
+    ++i;
+  }
 }
 
 }  // namespace termshade

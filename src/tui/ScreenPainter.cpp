@@ -46,9 +46,10 @@ std::pair<int, int> ScreenPainter::PaintPrompt(const std::string& label, const L
   // Scroll the field so the cursor stays visible.
   const int cursor = static_cast<int>(editor.Cursor());
   const int offset = std::max(0, cursor - fieldWidth + 1);
-  grid.Put(fieldStart, row,
-           std::u32string_view(editor.CodePoints()).substr(static_cast<size_t>(offset)),
-           CellStyle::kPlain);
+  // A raw byte of a file name (a control, invalid UTF-8) shows as '?', one cell.
+  std::u32string shown = editor.CodePoints().substr(static_cast<size_t>(offset));
+  for (char32_t& c : shown) c = LineEditor::IsRawByte(c) ? U'?' : c;
+  grid.Put(fieldStart, row, shown, CellStyle::kPlain);
   return {std::min(width - 1, fieldStart + cursor - offset), row};
 }
 
