@@ -72,6 +72,17 @@ TEST(ViewerKeys, OverlayShowsEveryRowWithinEightyColumns) {
   }
 }
 
+// A short window shows the rows that fit and says where the rest are and how to close.
+TEST(ViewerKeys, OverlayInAShortWindowSaysHowToClose) {
+  for (const int rows : {3, 6, 12}) {
+    ScreenGrid grid;
+    grid.Resize(60, rows);
+    ScreenPainter().PaintHelp(grid);
+    const std::string text = GridText(grid);
+    EXPECT_NE(text.find("more: termshade --help; any key closes this"), std::string::npos) << text;
+  }
+}
+
 TEST(ViewerKeys, HelpListsTheTableAsFormatted) {
   const std::string help = OutputOf(std::string(TERMSHADE_EXECUTABLE) + " --help");
   ASSERT_NE(help.find("Keys in the viewer"), std::string::npos) << help;

@@ -58,6 +58,12 @@ void ScreenPainter::PaintHelp(ScreenGrid& grid) const {
   std::istringstream table(FormatViewerKeys(""));
   for (std::string line; std::getline(table, line);) lines.push_back(line);
   lines.insert(lines.end(), {"", "any key closes this help"});
+  // A window too short for every row: as many as fit, then where the rest are.
+  const auto rowsInside = static_cast<size_t>(std::max(1, grid.HeightCells() - 1 - 2));
+  if (lines.size() > rowsInside) {
+    lines.resize(rowsInside - 1);
+    lines.emplace_back("more: termshade --help; any key closes this");
+  }
   size_t longest = 0;
   for (const std::string& line : lines) longest = std::max(longest, line.size());
   const int width = static_cast<int>(longest) + 4, height = static_cast<int>(lines.size()) + 2;
