@@ -49,16 +49,29 @@ class PtySession {
     return true;
   }
 
+  // The child leads its own session (forkpty): the signals reach strace and
+  // the viewer under it alike; one that ignores SIGTERM gets SIGKILL after 5 s.
   ~PtySession() {
     if (pid_ > 0) {
-      kill(pid_, SIGTERM);
-      waitpid(pid_, nullptr, 0);
+      kill(-pid_, SIGTERM);
+      for (int waited = 0; waitpid(pid_, nullptr, WNOHANG) == 0; ++waited) {
+        if (waited == 500) kill(-pid_, SIGKILL);
+        usleep(10000);
+      }
     }
     if (master_ >= 0) close(master_);
   }
 
   void Send(const std::string& keys) {
     [[maybe_unused]] const ssize_t n = write(master_, keys.data(), keys.size());
+  }
+
+  // Waits up to limitMs for the first output (a sanitizer build under strace
+  // on a busy machine can take seconds to start), then reads until quiet.
+  long ReadFirstFrame(int quietMs, int limitMs) {
+    pollfd fd{master_, POLLIN, 0};
+    if (poll(&fd, 1, limitMs) <= 0) return 0;
+    return ReadUntilQuiet(quietMs);
   }
 
   // Reads until the viewer has been quiet for quietMs; returns the bytes read.
@@ -238,9 +251,9 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
     return 1;
   }
   // Step 1: the first frame.
-  const long firstFrameBytes = session.ReadUntilQuiet(500);
+  const long firstFrameBytes = session.ReadFirstFrame(500, 30000);
   if (firstFrameBytes == 0) {
-    std::cerr << "termshade bench: the viewer drew nothing\n";
+    std::cerr << "termshade bench: the viewer drew nothing in 30 s\n";
     return 1;
   }
   if (options.settleSeconds > 0.0) session.ReadFor(options.settleSeconds, nullptr);
