@@ -215,7 +215,7 @@ check nan_aspect 2 "--cell-aspect: must be a number from 0.25 to 8" -- "$bin" re
 check zero_rho 2 "--rho: must be finite and positive" -- "$bin" render "$src/data/cube.dat" --rho 0
 expect zero_rho_message_is_short test "$(wc -c <"$work/err")" -lt 120
 check huge_size 2 "COLS must be 1..4096 and ROWS 1..2048" -- "$bin" render "$src/data/cube.dat" --size 100000x100000
-check nan_seconds 2 "--seconds: must be a number" -- "$bin" bench methods --seconds nan
+check nan_seconds 2 "--seconds: must be a number" -- "$bin" bench methods --seconds nan --csv "$work/nan.csv" --svg "$work/nan.svg"
 check blank_ramp 2 "blank" -- "$bin" render "$src/data/cube.dat" --ramp ' .:'
 check block_ramp 0 "" -- env LC_ALL=C "$bin" render "$src/data/cube.dat" --size 40x12 --ramp '░▒▓█'
 expect block_ramp_rows_are_40_characters test "$(python3 -c 'import sys; print(set(len(l.rstrip("\n")) for l in open(sys.argv[1], encoding="utf-8")))' "$work/out")" = "{40}"
