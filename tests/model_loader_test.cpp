@@ -51,6 +51,29 @@ TEST(HostileModels, AssimpRefusesBadPlyIndices) {
   }
 }
 
+// Assimp's PLY importer takes content starting "ply" under any name and loops
+// forever on a header without end_header (a libFuzzer timeout): such content
+// gets our header's error on every path, the reference path included.
+TEST(HostileModels, PlyHeaderThatNeverEndsIsRefusedUnderAnyName) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n";
+  for (const bool importerOnly : {false, true}) {
+    LoadOptions options;
+    options.importerOnly = importerOnly;
+    for (const char* name : {"m.ply", "m.glb", "m.gltf", "m.dae", "m.3ds", "m.off", "m"}) {
+      const Loaded<Mesh> mesh = LoadModelBytes(header, name, options);
+      ASSERT_FALSE(mesh.Ok()) << name;
+      EXPECT_EQ(mesh.Error().line, 4) << name;
+      EXPECT_NE(mesh.Error().message.find("expected 'end_header'"), std::string::npos)
+          << name << ": " << mesh.Error().ToString();
+    }
+  }
+  // Assimp's own magic check is case-blind and skips a leading line end.
+  EXPECT_FALSE(LoadModelBytes("PlY\nformat ascii 1.0\n", "m.glb").Ok());
+  const Loaded<Mesh> afterLineEnd = LoadModelBytes("\r\nply\nformat ascii 1.0\n", "m.glb");
+  ASSERT_FALSE(afterLineEnd.Ok());
+  EXPECT_EQ(afterLineEnd.Error().line, 3) << afterLineEnd.Error().ToString();
+}
+
 TEST_P(HostileModels, AreRefusedWithAMessageNamingTheFile) {
   const std::string path = SourcePath(std::string("tests/models/bad/") + GetParam().name);
   const std::string error = ErrorOf(std::string("tests/models/bad/") + GetParam().name);
@@ -75,6 +98,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"stl_binary_cut_short.stl",
                  "binary STL header counts 1000 triangles, so 84 + 50 x 1000 = 50084 bytes, but "
                  "the file has 259 (cut short?)"},
+        BadModel{"ply_header_never_ends_named_glb.glb",
+                 ":6:1: content read as PLY: expected 'end_header' to close the PLY header"},
+        BadModel{"ply_header_never_ends_after_a_property.ply",
+                 ":4:1: expected 'end_header' to close the PLY header"},
         BadModel{"off_counts_beyond_file_size.off", "the header promises 353535235358 vertices"},
         BadModel{"off_header_counts_huge.off", "the header promises 900000000 vertices"},
         BadModel{"obj_mtllib_absolute_path.obj", "refused to read '/etc/passwd': an absolute path"},

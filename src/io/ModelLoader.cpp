@@ -20,6 +20,7 @@
 #include "io/FileBytesLoader.h"
 #include "io/LoadBudget.h"
 #include "io/OwnReaders.h"
+#include "io/PlyReader.h"
 #include "io/RegularFile.h"
 
 namespace termshade {
@@ -121,6 +122,10 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   std::string text = bytes.TakeString();
   if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
   if (auto problem = headerProblem(text)) return fail(std::move(*problem));
+  if (auto problem = CheckPlyHeaderForImporter(text, place.displayName)) {
+    if (format != "ply") problem->message = "content read as PLY: " + problem->message;
+    return *problem;
+  }
   return ImportWithAssimp(source, std::move(text), options);
 }
 

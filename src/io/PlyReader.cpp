@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
@@ -573,6 +574,32 @@ std::optional<Loaded<Mesh>> ReadPly(std::string_view bytes, const std::string& p
   }
   DropUnusedVertices(reader.mesh);
   return Loaded<Mesh>(std::move(reader.mesh));
+}
+
+std::optional<LoadError> CheckPlyHeaderForImporter(std::string_view bytes,
+                                                   const std::string& path) {
+  // Step 1: where Assimp's first line starts (a leading line end skips to past the first '\n').
+  const auto isLineEnd = [](char c) { return c == '\n' || c == '\r' || c == '\0' || c == '\f'; };
+  size_t start = 0;
+  if (!bytes.empty() && isLineEnd(bytes[0])) {
+    const size_t newline = bytes.find('\n');
+    if (newline == std::string_view::npos) return std::nullopt;
+    start = newline + 1;
+  }
+  const std::string_view text = bytes.substr(start);
+  const auto lower = [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  };
+  if (text.size() < 3 || lower(text[0]) != 'p' || lower(text[1]) != 'l' || lower(text[2]) != 'y') {
+    return std::nullopt;
+  }
+  // Step 2: a header this reader ends. Assimp splits lines at more bytes than
+  // '\n' but starts a line after every '\n', so it reaches the same 'end_header'.
+  Loaded<Header> parsed = ParseHeader(text, path);
+  if (parsed.Ok()) return std::nullopt;
+  LoadError error = parsed.Error();
+  if (start > 0 && error.line > 0) ++error.line;
+  return error;
 }
 
 }  // namespace termshade
