@@ -4,9 +4,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include <clocale>
 #include <numbers>
 
 #include "geometry/FitCamera.h"
+#include "io/LoadError.h"
 #include "support/TestSupport.h"
 #include "tui/LineEditor.h"
 #include "tui/PathCompletion.h"
@@ -265,6 +267,62 @@ TEST(StatusLine, AMessageKeepsItsFirstWordAndItsEnd) {
   const std::vector<StatusSegment> segments{{message, 0, false, Elision::kMiddle},
                                             {"theta 0.30", 1, true}};
   EXPECT_EQ(ComposeStatusLine(segments, 40), "opened /a...of/the/project/data/cube.dat");
+}
+
+// LC_CTYPE set for a test's scope (wcwidth follows it), restored after.
+class CtypeLocale {
+ public:
+  explicit CtypeLocale(const char* name) : old_(std::setlocale(LC_CTYPE, nullptr)) {
+    ok_ = std::setlocale(LC_CTYPE, name) != nullptr;
+  }
+  ~CtypeLocale() { std::setlocale(LC_CTYPE, old_.c_str()); }
+  CtypeLocale(const CtypeLocale&) = delete;
+  CtypeLocale& operator=(const CtypeLocale&) = delete;
+  bool Ok() const { return ok_; }
+
+ private:
+  std::string old_;
+  bool ok_ = false;
+};
+
+TEST(TerminalText, AUtf8TerminalKeepsOneCellCodePointsAndEscapesTheRest) {
+  CtypeLocale utf8("C.UTF-8");
+  if (!utf8.Ok()) GTEST_SKIP() << "no C.UTF-8 locale";
+  const std::string name =
+      "/m/\xC3\xBC"
+      "ber/\xD0\xBC\xD0\xBE\xD0\xB4.obj";  // /m/über/мод.obj
+  EXPECT_EQ(SanitizeForTerminal(name, 200, true), name);
+  EXPECT_EQ(SanitizeForTerminal(name, 200, false),
+            "/m/\\xC3\\xBCber/\\xD0\\xBC\\xD0\\xBE\\xD0\\xB4.obj");
+  // C1 CSI, right-to-left override, zero-width space, a wide CJK glyph, a
+  // cut sequence and a stray continuation byte: escaped byte by byte.
+  EXPECT_EQ(SanitizeForTerminal("a\xC2\x9B"
+                                "31m",
+                                200, true),
+            "a\\xC2\\x9B31m");
+  EXPECT_EQ(SanitizeForTerminal("x\xE2\x80\xAEy", 200, true), "x\\xE2\\x80\\xAEy");
+  EXPECT_EQ(SanitizeForTerminal("\xE2\x80\x8B", 200, true), "\\xE2\\x80\\x8B");
+  EXPECT_EQ(SanitizeForTerminal("\xE6\xA8\xA1", 200, true), "\\xE6\\xA8\\xA1");
+  EXPECT_EQ(SanitizeForTerminal("\xC3", 200, true), "\\xC3");
+  EXPECT_EQ(SanitizeForTerminal("\xBC\x1B[2J", 200, true), "\\xBC\\x1B[2J");
+  // Idempotent, as messages are escaped more than once on their way.
+  const std::string once = SanitizeForTerminal("\xC3\xBC\xE2\x80\xAE\x07", 200, true);
+  EXPECT_EQ(SanitizeForTerminal(once, 200, true), once);
+}
+
+TEST(TerminalText, TheCLocaleEscapesEverythingBeyondAscii) {
+  CtypeLocale c("C");
+  ASSERT_TRUE(c.Ok());
+  EXPECT_EQ(SanitizeForTerminal("\xC3\xBC", 200, true), "\\xC3\\xBC");
+}
+
+TEST(StatusLine, Utf8TakesOneCellPerCodePoint) {
+  const std::string name =
+      "\xD0\xBC\xD0\xBE\xD0\xB4\xD0\xB5\xD0\xBB\xD1\x8C.obj";  // модель.obj, 10 cells
+  EXPECT_EQ(ComposeStatusLine({{name, 0, false}, {"? help", 1, true}}, 18), name + "  ? help");
+  EXPECT_EQ(Elide(name, 8, Elision::kFront), "...\xD1\x8C.obj");
+  EXPECT_EQ(Elide(name, 3, Elision::kCutEnd), "\xD0\xBC\xD0\xBE\xD0\xB4");
+  EXPECT_EQ(Elide(name, 9, Elision::kMiddle), "\xD0\xBC...\xD1\x8C.obj");
 }
 
 void Type(LineEditor& editor, std::string_view bytes) {

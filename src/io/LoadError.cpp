@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "shade/Utf8.h"
+
 namespace termshade {
 
-std::string LoadError::ToString() const {
-  std::string out = SanitizeForTerminal(file, 4096);
+std::string LoadError::ToString(bool keepUtf8) const {
+  std::string out = SanitizeForTerminal(file, 4096, keepUtf8);
   if (line > 0) {
     out += ':';
     out += std::to_string(line);
@@ -17,24 +19,38 @@ std::string LoadError::ToString() const {
   }
   // Messages quote file content and importers' text: escaped too (escaping
   // is idempotent, so already escaped text stays as it is).
-  return out + ": " + SanitizeForTerminal(message, 1000);
+  return out + ": " + SanitizeForTerminal(message, 1000, keepUtf8);
 }
 
-std::string SanitizeForTerminal(std::string_view text, size_t maxLength) {
+std::string SanitizeForTerminal(std::string_view text, size_t maxLength, bool keepUtf8) {
   std::string out;
-  for (char c : text) {
+  for (size_t i = 0; i < text.size();) {
     if (out.size() >= maxLength) {
       out += "...";
       break;
     }
-    const auto byte = static_cast<unsigned char>(c);
+    const auto byte = static_cast<unsigned char>(text[i]);
     if (byte >= 0x20 && byte < 0x7f) {
-      out += c;
-    } else {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
-      out += escaped;
+      out += text[i++];
+      continue;
     }
+    // A whole UTF-8 sequence the terminal shows safely, one cell wide.
+    if (keepUtf8 && byte >= 0x80) {
+      const auto length = static_cast<size_t>(Utf8SequenceLength(byte));
+      const std::string_view sequence = text.substr(i, length);
+      const auto decoded = length > 1 && sequence.size() == length
+                               ? DecodeUtf8(sequence)
+                               : std::optional<std::vector<char32_t>>{};
+      if (decoded && IsSafeOneCellCodePoint(decoded->front())) {
+        out += sequence;
+        i += length;
+        continue;
+      }
+    }
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
+    out += escaped;
+    ++i;
   }
   return out;
 }

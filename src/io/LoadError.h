@@ -15,7 +15,8 @@ struct LoadError {
   int column = 0;
   std::string message;
 
-  std::string ToString() const;
+  /// keepUtf8: as SanitizeForTerminal's.
+  std::string ToString(bool keepUtf8 = false) const;
 };
 
 /// Either a value or the error that prevented it.
@@ -34,8 +35,11 @@ class Loaded {
 };
 
 /// Makes text from a file safe to show: control bytes, DEL and bytes >= 0x80
-/// become \xNN, so no escape sequence reaches a terminal.
-std::string SanitizeForTerminal(std::string_view text, size_t maxLength = 200);
+/// become \xNN, so no escape sequence reaches a terminal. keepUtf8 (a UTF-8
+/// terminal): valid UTF-8 for a code point IsSafeOneCellCodePoint accepts
+/// stays as it is, one cell per code point.
+std::string SanitizeForTerminal(std::string_view text, size_t maxLength = 200,
+                                bool keepUtf8 = false);
 
 /// As SanitizeForTerminal, line by line: newlines stay, nothing is cut short
 /// (help text, multi-line messages).

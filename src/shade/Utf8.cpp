@@ -1,10 +1,10 @@
 #include "shade/Utf8.h"
 
-namespace termshade {
-namespace {
+#include <cwchar>
 
-// Length of the sequence a lead byte starts, 0 for a byte that cannot lead.
-int SequenceLength(unsigned char lead) {
+namespace termshade {
+
+int Utf8SequenceLength(unsigned char lead) {
   if (lead < 0x80) return 1;
   if (lead >= 0xC2 && lead <= 0xDF) return 2;
   if (lead >= 0xE0 && lead <= 0xEF) return 3;
@@ -12,13 +12,22 @@ int SequenceLength(unsigned char lead) {
   return 0;
 }
 
-}  // namespace
+bool IsSafeOneCellCodePoint(char32_t c) {
+  if (c < 0xA0 || c == 0xAD || c == 0x61C || c == 0x180E) return false;
+  // Unicode's format characters (Cf) that reorder or hide text.
+  if ((c >= 0x200B && c <= 0x200F) || (c >= 0x2028 && c <= 0x202E) ||
+      (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF || (c >= 0xFFF9 && c <= 0xFFFB) ||
+      (c >= 0xE0000 && c <= 0xE007F)) {
+    return false;
+  }
+  return wcwidth(static_cast<wchar_t>(c)) == 1;
+}
 
 std::optional<std::vector<char32_t>> DecodeUtf8(std::string_view text) {
   std::vector<char32_t> codePoints;
   for (size_t i = 0; i < text.size();) {
     const auto lead = static_cast<unsigned char>(text[i]);
-    const int length = SequenceLength(lead);
+    const int length = Utf8SequenceLength(lead);
     if (length == 0 || i + static_cast<size_t>(length) > text.size()) return std::nullopt;
     char32_t value = length == 1 ? lead : lead & (0x7F >> length);
     for (int k = 1; k < length; ++k) {

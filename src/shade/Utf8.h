@@ -11,6 +11,16 @@ namespace termshade {
 /// (overlong forms, surrogates and values past U+10FFFF are invalid).
 std::optional<std::vector<char32_t>> DecodeUtf8(std::string_view text);
 
+/// Bytes in the UTF-8 sequence a lead byte starts: 1 for ASCII, 0 for a byte
+/// that cannot lead one.
+int Utf8SequenceLength(unsigned char lead);
+
+/// True for a code point that may go to a terminal as it is and takes one
+/// cell there: beyond ASCII, no control (C1), no invisible format character
+/// (bidirectional overrides, zero-width spaces, tags) and one cell wide by
+/// the current locale (wcwidth), so none in the C locale.
+bool IsSafeOneCellCodePoint(char32_t codePoint);
+
 /// Appends the UTF-8 bytes of one code point.
 void AppendUtf8(std::string& out, char32_t codePoint);
 

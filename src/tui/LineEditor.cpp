@@ -7,14 +7,6 @@ namespace {
 
 constexpr size_t kMaxCodePoints = 4096;
 
-// Bytes in the UTF-8 sequence a lead byte starts; 0 when it cannot lead one.
-size_t SequenceBytes(unsigned char lead) {
-  if (lead >= 0xC2 && lead <= 0xDF) return 2;
-  if (lead >= 0xE0 && lead <= 0xEF) return 3;
-  if (lead >= 0xF0 && lead <= 0xF4) return 4;
-  return 0;
-}
-
 bool IsControl(char32_t c) {
   return c < 0x20 || (c >= 0x7F && c <= 0x9F);
 }
@@ -32,7 +24,8 @@ void LineEditor::InsertByte(unsigned char byte) {
   if (!continuation) pending_.clear();
   if (continuation && pending_.empty()) return;
   pending_ += static_cast<char>(byte);
-  const size_t wanted = SequenceBytes(static_cast<unsigned char>(pending_[0]));
+  const auto wanted =
+      static_cast<size_t>(Utf8SequenceLength(static_cast<unsigned char>(pending_[0])));
   if (wanted == 0) {
     pending_.clear();
     return;
@@ -93,7 +86,7 @@ void LineEditor::SetText(std::string_view bytes) {
   for (size_t i = 0; i < bytes.size();) {
     // A printable code point in valid UTF-8 as typed; any other byte raw.
     const auto lead = static_cast<unsigned char>(bytes[i]);
-    const size_t length = lead < 0x80 ? 1 : SequenceBytes(lead);
+    const auto length = static_cast<size_t>(Utf8SequenceLength(lead));
     if (length > 0 && i + length <= bytes.size()) {
       const auto decoded = DecodeUtf8(bytes.substr(i, length));
       if (decoded && decoded->size() == 1 && !IsControl(decoded->front())) {

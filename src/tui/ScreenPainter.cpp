@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "io/LoadError.h"
+#include "shade/Utf8.h"
 #include "tui/ViewerKeys.h"
 
 namespace termshade {
@@ -33,7 +34,13 @@ void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours,
 void ScreenPainter::PaintStatus(const std::string& text, ScreenGrid& grid) const {
   const int row = grid.HeightCells() - 1;
   grid.FillRow(row, CellStyle::kReverse);
-  grid.Put(0, row, SanitizeForTerminal(text, 4096), CellStyle::kReverse);
+  // Sanitized text: ASCII, or UTF-8 of one cell per code point (others show as '?').
+  if (const auto codePoints = DecodeUtf8(text)) {
+    grid.Put(0, row, std::u32string_view(codePoints->data(), codePoints->size()),
+             CellStyle::kReverse);
+  } else {
+    grid.Put(0, row, SanitizeForTerminal(text, 4096), CellStyle::kReverse);
+  }
 }
 
 std::pair<int, int> ScreenPainter::PaintPrompt(const std::string& label, const LineEditor& editor,

@@ -7,6 +7,29 @@ namespace {
 
 constexpr std::string_view kEllipsis = "...";
 
+// Sanitized text takes one cell per code point: its bytes but UTF-8 continuation bytes.
+size_t Cells(std::string_view text) {
+  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  }));
+}
+
+// The byte offset where cell `cell` starts (the size past the last).
+size_t CellOffset(std::string_view text, size_t cell) {
+  size_t offset = 0;
+  for (size_t seen = 0; offset < text.size(); ++offset) {
+    if ((static_cast<unsigned char>(text[offset]) & 0xC0) == 0x80) continue;
+    if (seen++ == cell) return offset;
+  }
+  return text.size();
+}
+
+// Cells [first, first + count) of text.
+std::string CellRange(const std::string& text, size_t first, size_t count) {
+  const size_t start = CellOffset(text, first);
+  return text.substr(start, CellOffset(text, first + count) - start);
+}
+
 std::string Join(const std::vector<StatusSegment>& segments, const std::vector<bool>& kept,
                  bool right) {
   std::string out;
@@ -25,9 +48,9 @@ bool ShortenOne(std::vector<StatusSegment>& segments, const std::vector<bool>& k
   for (size_t i = 0; i < segments.size(); ++i) {
     StatusSegment& segment = segments[i];
     const auto minWidth = static_cast<size_t>(std::max(0, segment.minWidthCells));
-    if (!kept[i] || minWidth == 0 || segment.text.size() <= minWidth) continue;
-    const size_t target =
-        std::max(minWidth, segment.text.size() - std::min(overflow, segment.text.size()));
+    const size_t cells = Cells(segment.text);
+    if (!kept[i] || minWidth == 0 || cells <= minWidth) continue;
+    const size_t target = std::max(minWidth, cells - std::min(overflow, cells));
     segment.text = Elide(segment.text, target, segment.elision);
     return true;
   }
@@ -37,12 +60,14 @@ bool ShortenOne(std::vector<StatusSegment>& segments, const std::vector<bool>& k
 }  // namespace
 
 std::string Elide(const std::string& text, size_t widthCells, Elision elision) {
-  if (text.size() <= widthCells) return text;
-  if (elision == Elision::kCutEnd) return text.substr(0, widthCells);
-  if (widthCells <= kEllipsis.size()) return text.substr(text.size() - widthCells);
+  const size_t cells = Cells(text);
+  if (cells <= widthCells) return text;
+  if (elision == Elision::kCutEnd) return CellRange(text, 0, widthCells);
+  if (widthCells <= kEllipsis.size()) return CellRange(text, cells - widthCells, widthCells);
   const size_t keep = widthCells - kEllipsis.size();
   const size_t head = elision == Elision::kMiddle ? keep / 4 : 0;
-  return text.substr(0, head) + std::string(kEllipsis) + text.substr(text.size() - (keep - head));
+  return CellRange(text, 0, head) + std::string(kEllipsis) +
+         CellRange(text, cells - (keep - head), keep - head);
 }
 
 std::string ComposeStatusLine(std::vector<StatusSegment> segments, int widthCells) {
@@ -51,10 +76,10 @@ std::string ComposeStatusLine(std::vector<StatusSegment> segments, int widthCell
   for (;;) {
     const std::string left = Join(segments, kept, false), right = Join(segments, kept, true);
     const size_t gap = left.empty() || right.empty() ? 0 : 1;
-    const size_t used = left.size() + gap + right.size();
+    const size_t used = Cells(left) + gap + Cells(right);
     if (used <= width) {
       std::string line = left;
-      line.append(width - left.size() - right.size(), ' ');
+      line.append(width - Cells(left) - Cells(right), ' ');
       line += right;
       return line;
     }

@@ -24,10 +24,11 @@ struct StatusSegment {
 /// " | " from the left, right ones flush right. When they do not fit, a
 /// segment with a minimum width is shortened first, then segments are
 /// dropped from the highest priority number down, and the last one left is
-/// elided to the width. Text must already be sanitized.
+/// elided to the width. Text must already be sanitized (SanitizeForTerminal:
+/// ASCII, or UTF-8 of one cell per code point).
 std::string ComposeStatusLine(std::vector<StatusSegment> segments, int widthCells);
 
-/// text in at most widthCells characters, "..." marking where it was cut.
+/// text in at most widthCells cells (code points), "..." marking where it was cut.
 std::string Elide(const std::string& text, size_t widthCells, Elision elision);
 
 }  // namespace termshade

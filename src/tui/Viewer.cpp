@@ -184,7 +184,7 @@ class EventLoop {
 
   std::string LoadName() const {
     const std::string& path = jobRequest_.path;
-    return path.empty() ? "demo" : SanitizeForTerminal(path, 4096);
+    return path.empty() ? "demo" : SanitizeForTerminal(path, 4096, state_.Utf8());
   }
 
   // "loading NAME 37%", as the status line shows it while a worker loads.
@@ -435,7 +435,8 @@ class EventLoop {
     shownLoadingText_ = LoadingText();
     fields.lead = shownLoadingText_;
     fields.leadIsModel = false;
-    if (fields.lead.empty()) fields.lead = SanitizeForTerminal(state_.Message(), 4096);
+    if (fields.lead.empty())
+      fields.lead = SanitizeForTerminal(state_.Message(), 4096, state_.Utf8());
     if (fields.lead.empty()) {
       fields.lead =
           state_.LightMode() ? "LIGHT: arrows move the sun, L or Esc ends" : state_.ModelLabel();

@@ -13,10 +13,10 @@ namespace termshade {
 namespace {
 
 // The status line has one row: name the file by its last path component.
-std::string StatusLineError(LoadError error) {
+std::string StatusLineError(LoadError error, bool keepUtf8) {
   const size_t slash = error.file.find_last_of('/');
   if (slash != std::string::npos) error.file = error.file.substr(slash + 1);
-  return error.ToString();
+  return error.ToString(keepUtf8);
 }
 
 }  // namespace
@@ -73,7 +73,7 @@ std::optional<LoadRequest> ViewerState::TakeLoadRequest() {
 void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
   if (request.turnTo) {  // u: the model shown, turned; the view stays
     if (!scene.Ok()) {
-      message_ = StatusLineError(scene.Error());
+      message_ = StatusLineError(scene.Error(), utf8_);
       return;
     }
     ShowScene(std::move(scene.Value()));
@@ -83,7 +83,7 @@ void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
   if (request.index && *request.index >= paths_.size()) return;
   if (!scene.Ok() && !hasModel_ && request.index) {  // starting: on to the next model
     if (!firstError_) firstError_ = scene.Error();
-    message_ = StatusLineError(scene.Error());
+    message_ = StatusLineError(scene.Error(), utf8_);
     const size_t next = *request.index + 1;
     if (next < paths_.size()) {
       pending_ = LoadRequest{paths_[next], next, std::nullopt};
@@ -93,7 +93,7 @@ void ViewerState::FinishLoad(const LoadRequest& request, Loaded<Scene> scene) {
     return;
   }
   if (!scene.Ok()) {
-    message_ = StatusLineError(scene.Error());
+    message_ = StatusLineError(scene.Error(), utf8_);
     if (request.index) stepFrom_ = *request.index;  // the next n goes on from here
     return;
   }
@@ -280,7 +280,8 @@ Camera ViewerState::CameraFor(int widthCells, int heightCells) const {
 
 std::string ViewerState::ModelLabel() const {
   const std::string& path = paths_[current_];
-  std::string label = path.empty() ? std::string(kDemoSceneName) : SanitizeForTerminal(path, 4096);
+  std::string label =
+      path.empty() ? std::string(kDemoSceneName) : SanitizeForTerminal(path, 4096, utf8_);
   if (paths_.size() > 1) {
     label += " [" + std::to_string(current_ + 1) + "/" + std::to_string(paths_.size()) + "]";
   }

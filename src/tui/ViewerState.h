@@ -99,6 +99,8 @@ class ViewerState {
     render_.glyphs = mode;
     utf8_ = utf8;
   }
+  /// Whether the terminal's locale is UTF-8: names and messages keep their UTF-8 then.
+  bool Utf8() const { return utf8_; }
   bool LightMode() const { return lightMode_; }
   bool Turntable() const { return turntable_; }
   bool HelpShown() const { return help_; }

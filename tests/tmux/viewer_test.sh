@@ -475,8 +475,9 @@ wait_for '\? help' 5 >/dev/null || fail "viewer did not start with a block ramp"
 frame_matches_render block_ramp_first_screen 24 "$src/data/sphere_cone.dat" --size 80x24 --ramp '░▒▓█' --format ansi --color 256
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
-# The prompt takes UTF-8: a path typed with an accent opens (the status
-# line shows the name's bytes beyond ASCII escaped).
+# The prompt takes UTF-8: a path typed with an accent opens, and the status
+# line shows the name as it is (one cell per code point); a right-to-left
+# override in a name stays escaped, so it cannot reorder the line.
 cp "$src/data/cube.dat" "$work/café.dat"
 run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start in C.UTF-8 for the prompt"
@@ -484,8 +485,17 @@ tm send-keys -t v o
 tm send-keys -t v -l "$work/café.dat"
 wait_for 'open: .*café\.dat' 5 >/dev/null && pass || fail "prompt did not show the accented path"
 tm send-keys -t v Enter
-wait_for 'opened .*caf\\xC3\\xA9\.dat' 5 >/dev/null && pass || fail "accented path did not open"
+wait_for 'opened .*café\.dat' 5 >/dev/null && pass || fail "accented path did not open as café.dat"
 frame_matches_render accented_path_opened 24 "$work/café.dat" --size 80x24 --format ansi --color 256
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+cp "$src/data/cube.dat" "$work/évil$(printf '\xe2\x80\xae')tad.dat"
+run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin $work/évil*tad.dat"
+wait_for '/évil\\xE2\\x80\\xAEtad\.dat' 5 >/dev/null && pass || fail "bidi override in a name not escaped"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+run "clear; LANG=C LC_ALL=C $bin $work/café.dat"
+wait_for '/caf\\xC3\\xA9\.dat' 5 >/dev/null && pass || fail "accented name in the C locale not escaped"
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 run "clear; LANG=C LC_ALL=C $bin --ramp '░▒▓█'; echo exit=\$?"
