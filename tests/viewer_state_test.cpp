@@ -61,6 +61,18 @@ TEST(ViewerState, OrbitStepsAndPhiLimits) {
   EXPECT_DOUBLE_EQ(state.View().phi, std::numbers::pi);
 }
 
+TEST(ViewerState, ThetaWrapsIntoOneTurn) {
+  ViewerState state = DemoState();
+  for (int i = 0; i < 4; ++i) state.Apply(ViewerAction::kOrbitLeft);  // 0.3 - 0.4
+  EXPECT_NEAR(state.View().theta, -0.1, 1e-12);
+  for (int i = 0; i < 33; ++i) state.Apply(ViewerAction::kOrbitRight);  // past pi
+  EXPECT_NEAR(state.View().theta, 3.2 - 2 * std::numbers::pi, 1e-12);
+  for (int i = 0; i < 1000; ++i) {
+    state.TurntableStep();
+    ASSERT_LE(std::fabs(state.View().theta), std::numbers::pi);
+  }
+}
+
 TEST(ViewerState, DistanceStaysWithinLimits) {
   ViewerState state = DemoState();
   const double start = state.View().rho;

@@ -19,6 +19,11 @@ std::string StatusLineError(LoadError error, bool keepUtf8) {
   return error.ToString(keepUtf8);
 }
 
+// An azimuth within [-pi, pi]: orbiting for a long time shows "theta -2.90", not "theta 1234.56".
+double WrapRadians(double angle) {
+  return std::remainder(angle, 2 * std::numbers::pi);
+}
+
 }  // namespace
 
 Loaded<Mesh> LoadViewerMesh(const std::string& path, const LoadOptions& options) {
@@ -161,12 +166,12 @@ void ViewerState::ResetView() {
 
 void ViewerState::Orbit(double dTheta, double dPhi) {
   if (lightMode_) {
-    sunAzimuth_ += dTheta;
+    sunAzimuth_ = WrapRadians(sunAzimuth_ + dTheta);
     sunElevation_ += dPhi;
     render_.sunEye = SunFromAngles(sunAzimuth_, sunElevation_);
     return;
   }
-  view_.theta += dTheta;
+  view_.theta = WrapRadians(view_.theta + dTheta);
   view_.phi = std::clamp(view_.phi + dPhi, 0.0, std::numbers::pi);
 }
 
@@ -271,7 +276,7 @@ void ViewerState::Drag(int deltaCols, int deltaRows) {
 }
 
 void ViewerState::TurntableStep() {
-  view_.theta += kTurntableStepRadians;
+  view_.theta = WrapRadians(view_.theta + kTurntableStepRadians);
 }
 
 Camera ViewerState::CameraFor(int widthCells, int heightCells) const {
