@@ -297,7 +297,7 @@ class CtypeLocale {
   bool ok_ = false;
 };
 
-TEST(TerminalText, AUtf8TerminalKeepsOneCellCodePointsAndEscapesTheRest) {
+TEST(TerminalText, AUtf8TerminalKeepsShownCodePointsAndEscapesTheRest) {
   CtypeLocale utf8("C.UTF-8");
   if (!utf8.Ok()) GTEST_SKIP() << "no C.UTF-8 locale";
   const std::string name =
@@ -306,15 +306,17 @@ TEST(TerminalText, AUtf8TerminalKeepsOneCellCodePointsAndEscapesTheRest) {
   EXPECT_EQ(SanitizeForTerminal(name, 200, true), name);
   EXPECT_EQ(SanitizeForTerminal(name, 200, false),
             "/m/\\xC3\\xBCber/\\xD0\\xBC\\xD0\\xBE\\xD0\\xB4.obj");
-  // C1 CSI, right-to-left override, zero-width space, a wide CJK glyph, a
-  // cut sequence and a stray continuation byte: escaped byte by byte.
+  // A wide CJK glyph stays (two cells); C1 CSI, right-to-left override,
+  // zero-width space, a lone combining accent, a cut sequence and a stray
+  // continuation byte: escaped byte by byte.
   EXPECT_EQ(SanitizeForTerminal("a\xC2\x9B"
                                 "31m",
                                 200, true),
             "a\\xC2\\x9B31m");
   EXPECT_EQ(SanitizeForTerminal("x\xE2\x80\xAEy", 200, true), "x\\xE2\\x80\\xAEy");
   EXPECT_EQ(SanitizeForTerminal("\xE2\x80\x8B", 200, true), "\\xE2\\x80\\x8B");
-  EXPECT_EQ(SanitizeForTerminal("\xE6\xA8\xA1", 200, true), "\\xE6\\xA8\\xA1");
+  EXPECT_EQ(SanitizeForTerminal("\xE6\xA8\xA1", 200, true), "\xE6\xA8\xA1");
+  EXPECT_EQ(SanitizeForTerminal("e\xCC\x81", 200, true), "e\\xCC\\x81");
   EXPECT_EQ(SanitizeForTerminal("\xC3", 200, true), "\\xC3");
   EXPECT_EQ(SanitizeForTerminal("\xBC\x1B[2J", 200, true), "\\xBC\\x1B[2J");
   // Idempotent, as messages are escaped more than once on their way.
@@ -326,6 +328,17 @@ TEST(TerminalText, TheCLocaleEscapesEverythingBeyondAscii) {
   CtypeLocale c("C");
   ASSERT_TRUE(c.Ok());
   EXPECT_EQ(SanitizeForTerminal("\xC3\xBC", 200, true), "\\xC3\\xBC");
+}
+
+TEST(StatusLine, WideCodePointsTakeTwoCellsAndAreNeverHalved) {
+  CtypeLocale utf8("C.UTF-8");
+  if (!utf8.Ok()) GTEST_SKIP() << "no C.UTF-8 locale";
+  const std::string name = "\xE6\xA8\xA1\xE5\x9E\x8B.obj";  // 模型.obj, 8 cells
+  EXPECT_EQ(ComposeStatusLine({{name, 0, false}, {"? help", 1, true}}, 16), name + "  ? help");
+  EXPECT_EQ(Elide(name, 6, Elision::kCutEnd), "\xE6\xA8\xA1\xE5\x9E\x8B.o");
+  EXPECT_EQ(Elide(name, 3, Elision::kCutEnd), "\xE6\xA8\xA1");  // not half of the second
+  EXPECT_EQ(Elide(name, 7, Elision::kFront), "....obj");
+  EXPECT_EQ(Elide("abcd" + name.substr(0, 6), 7, Elision::kFront), "..." + name.substr(0, 6));
 }
 
 TEST(StatusLine, Utf8TakesOneCellPerCodePoint) {

@@ -34,14 +34,14 @@ std::string SanitizeForTerminal(std::string_view text, size_t maxLength, bool ke
       out += text[i++];
       continue;
     }
-    // A whole UTF-8 sequence the terminal shows safely, one cell wide.
+    // A whole UTF-8 sequence the terminal shows safely, one or two cells wide.
     if (keepUtf8 && byte >= 0x80) {
       const auto length = static_cast<size_t>(Utf8SequenceLength(byte));
       const std::string_view sequence = text.substr(i, length);
       const auto decoded = length > 1 && sequence.size() == length
                                ? DecodeUtf8(sequence)
                                : std::optional<std::vector<char32_t>>{};
-      if (decoded && IsSafeOneCellCodePoint(decoded->front())) {
+      if (decoded && SafeCodePointCells(decoded->front()) > 0) {
         out += sequence;
         i += length;
         continue;

@@ -36,8 +36,8 @@ class Loaded {
 
 /// Makes text from a file safe to show: control bytes, DEL and bytes >= 0x80
 /// become \xNN, so no escape sequence reaches a terminal. keepUtf8 (a UTF-8
-/// terminal): valid UTF-8 for a code point IsSafeOneCellCodePoint accepts
-/// stays as it is, one cell per code point.
+/// terminal): valid UTF-8 for a code point SafeCodePointCells accepts stays
+/// as it is.
 std::string SanitizeForTerminal(std::string_view text, size_t maxLength = 200,
                                 bool keepUtf8 = false);
 

@@ -12,15 +12,16 @@ int Utf8SequenceLength(unsigned char lead) {
   return 0;
 }
 
-bool IsSafeOneCellCodePoint(char32_t c) {
-  if (c < 0xA0 || c == 0xAD || c == 0x61C || c == 0x180E) return false;
+int SafeCodePointCells(char32_t c) {
+  if (c < 0xA0 || c == 0xAD || c == 0x61C || c == 0x180E) return 0;
   // Unicode's format characters (Cf) that reorder or hide text.
   if ((c >= 0x200B && c <= 0x200F) || (c >= 0x2028 && c <= 0x202E) ||
       (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF || (c >= 0xFFF9 && c <= 0xFFFB) ||
       (c >= 0xE0000 && c <= 0xE007F)) {
-    return false;
+    return 0;
   }
-  return wcwidth(static_cast<wchar_t>(c)) == 1;
+  const int cells = wcwidth(static_cast<wchar_t>(c));
+  return cells == 1 || cells == 2 ? cells : 0;
 }
 
 std::optional<std::vector<char32_t>> DecodeUtf8(std::string_view text) {

@@ -15,11 +15,12 @@ std::optional<std::vector<char32_t>> DecodeUtf8(std::string_view text);
 /// that cannot lead one.
 int Utf8SequenceLength(unsigned char lead);
 
-/// True for a code point that may go to a terminal as it is and takes one
-/// cell there: beyond ASCII, no control (C1), no invisible format character
-/// (bidirectional overrides, zero-width spaces, tags) and one cell wide by
-/// the current locale (wcwidth), so none in the C locale.
-bool IsSafeOneCellCodePoint(char32_t codePoint);
+/// The cells a code point beyond ASCII takes when it may go to a terminal as
+/// it is: 1 or 2 (wide, CJK) by the current locale (wcwidth, so none in the
+/// C locale); 0 for one that may not: C1 controls, invisible format
+/// characters (bidirectional overrides, zero-width spaces, tags), combining
+/// marks, and anything the locale cannot show.
+int SafeCodePointCells(char32_t codePoint);
 
 /// Appends the UTF-8 bytes of one code point.
 void AppendUtf8(std::string& out, char32_t codePoint);

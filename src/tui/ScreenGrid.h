@@ -16,7 +16,11 @@ enum class CellStyle : uint8_t {
   kFace,     ///< a face, in its cell colour
 };
 
-/// One character cell of the terminal: a one-cell-wide code point and its style.
+/// The glyph of the right half of a two-cell (wide) code point in the cell to its left.
+inline constexpr char32_t kWideTail = 0;
+
+/// One character cell of the terminal: a code point and its style. A wide
+/// code point takes this cell and the next, which holds kWideTail.
 struct ScreenCell {
   char32_t glyph = U' ';
   CellStyle style = CellStyle::kPlain;
@@ -39,14 +43,19 @@ class ScreenGrid {
   /// Writes text from (col, row), cut at the right edge; bytes outside
   /// printable ASCII become '?'.
   void Put(int col, int row, std::string_view text, CellStyle style);
-  /// The same for code points: those the locale does not show one cell
-  /// wide (wide, combining, control, or anything beyond ASCII in the C
-  /// locale) become '?'.
+  /// The same for code points: one or two cells each, as SafeCodePointCells
+  /// gives; the rest (controls, combining, anything beyond ASCII in the C
+  /// locale, and a wide one with no room left) become '?'.
   void Put(int col, int row, std::u32string_view text, CellStyle style);
+  /// The cells Put takes for text.
+  static int CellsOf(std::u32string_view text);
   void FillRow(int row, CellStyle style);
   void Clear();
 
  private:
+  /// Writes one cell; a wide code point it overwrites half of loses its other half (to a blank).
+  void Set(int col, int row, const ScreenCell& cell);
+
   int widthCells_ = 0;
   int heightCells_ = 0;
   std::vector<ScreenCell> cells_;

@@ -50,14 +50,18 @@ std::pair<int, int> ScreenPainter::PaintPrompt(const std::string& label, const L
   grid.Put(0, row, label, CellStyle::kPlain);
   const int fieldStart = static_cast<int>(label.size());
   const int fieldWidth = std::max(1, width - fieldStart - 1);
-  // Scroll the field so the cursor stays visible.
-  const int cursor = static_cast<int>(editor.Cursor());
-  const int offset = std::max(0, cursor - fieldWidth + 1);
   // A raw byte of a file name (a control, invalid UTF-8) shows as '?', one cell.
-  std::u32string shown = editor.CodePoints().substr(static_cast<size_t>(offset));
+  std::u32string shown = editor.CodePoints();
   for (char32_t& c : shown) c = LineEditor::IsRawByte(c) ? U'?' : c;
-  grid.Put(fieldStart, row, shown, CellStyle::kPlain);
-  return {std::min(width - 1, fieldStart + cursor - offset), row};
+  // Scroll the field so the cursor stays visible (wide code points take two cells).
+  const size_t cursor = editor.Cursor();
+  size_t offset = 0;
+  int cursorCells = ScreenGrid::CellsOf(std::u32string_view(shown).substr(0, cursor));
+  while (cursorCells > fieldWidth - 1 && offset < cursor) {
+    cursorCells -= ScreenGrid::CellsOf(std::u32string_view(shown).substr(offset++, 1));
+  }
+  grid.Put(fieldStart, row, std::u32string_view(shown).substr(offset), CellStyle::kPlain);
+  return {std::min(width - 1, fieldStart + cursorCells), row};
 }
 
 void ScreenPainter::PaintHelp(ScreenGrid& grid) const {

@@ -2,32 +2,53 @@
 
 #include <algorithm>
 
+#include "shade/Utf8.h"
+
 namespace termshade {
 namespace {
 
 constexpr std::string_view kEllipsis = "...";
 
-// Sanitized text takes one cell per code point: its bytes but UTF-8 continuation bytes.
-size_t Cells(std::string_view text) {
-  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) {
-    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
-  }));
-}
+// A code point of sanitized text: where it starts and the cells it takes.
+struct Piece {
+  size_t offset;
+  int cells;
+};
 
-// The byte offset where cell `cell` starts (the size past the last).
-size_t CellOffset(std::string_view text, size_t cell) {
-  size_t offset = 0;
-  for (size_t seen = 0; offset < text.size(); ++offset) {
-    if ((static_cast<unsigned char>(text[offset]) & 0xC0) == 0x80) continue;
-    if (seen++ == cell) return offset;
+std::vector<Piece> Pieces(std::string_view text) {
+  std::vector<Piece> pieces;
+  for (size_t i = 0; i < text.size();) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    const auto length = std::max<size_t>(1, Utf8SequenceLength(lead));
+    int cells = 1;
+    if (lead >= 0x80) {
+      const auto decoded = DecodeUtf8(text.substr(i, length));
+      if (decoded && decoded->size() == 1)
+        cells = std::max(1, SafeCodePointCells(decoded->front()));
+    }
+    pieces.push_back({i, cells});
+    i += length;
   }
-  return text.size();
+  return pieces;
 }
 
-// Cells [first, first + count) of text.
-std::string CellRange(const std::string& text, size_t first, size_t count) {
-  const size_t start = CellOffset(text, first);
-  return text.substr(start, CellOffset(text, first + count) - start);
+size_t Cells(std::string_view text) {
+  size_t cells = 0;
+  for (const Piece& piece : Pieces(text)) cells += static_cast<size_t>(piece.cells);
+  return cells;
+}
+
+// The longest start (or end) of text within widthCells.
+std::string Front(const std::string& text, const std::vector<Piece>& pieces, size_t widthCells) {
+  size_t used = 0, count = 0;
+  while (count < pieces.size() && used + pieces[count].cells <= widthCells)
+    used += pieces[count++].cells;
+  return text.substr(0, count < pieces.size() ? pieces[count].offset : text.size());
+}
+std::string Back(const std::string& text, const std::vector<Piece>& pieces, size_t widthCells) {
+  size_t used = 0, first = pieces.size();
+  while (first > 0 && used + pieces[first - 1].cells <= widthCells) used += pieces[--first].cells;
+  return text.substr(first < pieces.size() ? pieces[first].offset : text.size());
 }
 
 std::string Join(const std::vector<StatusSegment>& segments, const std::vector<bool>& kept,
@@ -60,14 +81,13 @@ bool ShortenOne(std::vector<StatusSegment>& segments, const std::vector<bool>& k
 }  // namespace
 
 std::string Elide(const std::string& text, size_t widthCells, Elision elision) {
-  const size_t cells = Cells(text);
-  if (cells <= widthCells) return text;
-  if (elision == Elision::kCutEnd) return CellRange(text, 0, widthCells);
-  if (widthCells <= kEllipsis.size()) return CellRange(text, cells - widthCells, widthCells);
+  const std::vector<Piece> pieces = Pieces(text);
+  if (Cells(text) <= widthCells) return text;
+  if (elision == Elision::kCutEnd) return Front(text, pieces, widthCells);
+  if (widthCells <= kEllipsis.size()) return Back(text, pieces, widthCells);
   const size_t keep = widthCells - kEllipsis.size();
-  const size_t head = elision == Elision::kMiddle ? keep / 4 : 0;
-  return CellRange(text, 0, head) + std::string(kEllipsis) +
-         CellRange(text, cells - (keep - head), keep - head);
+  const std::string head = Front(text, pieces, elision == Elision::kMiddle ? keep / 4 : 0);
+  return head + std::string(kEllipsis) + Back(text, pieces, keep - Cells(head));
 }
 
 std::string ComposeStatusLine(std::vector<StatusSegment> segments, int widthCells) {

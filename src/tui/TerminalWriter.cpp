@@ -137,6 +137,9 @@ void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int
           break;
         }
       }
+      // A wide code point is sent whole: from its first cell, through its tail.
+      if (col > 0 && grid.At(col, row).glyph == kWideTail) --col;
+      if (end < rowEnd && grid.At(end, row).glyph == kWideTail) ++end;
       if (cursorRow != row || cursorCol != col) AppendMove(col, row);
       for (int c = col; c < end; ++c) {
         const ScreenCell& cell = grid.At(c, row);
@@ -144,7 +147,12 @@ void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int
         // A full block hides its background: keep the current one rather than pay for a reset.
         if (cell.glyph == U'\u2588') wanted.background = current_.background;
         AppendAttributes(wanted);
-        AppendUtf8(out_, cell.glyph);
+        // A lone tail shows blank, as does a lead whose tail is in a last cell kept blank.
+        const bool lead = cell.glyph != kWideTail && c + 1 < grid.WidthCells() &&
+                          grid.At(c + 1, row).glyph == kWideTail;
+        const bool whole = lead && c + 1 < end;
+        AppendUtf8(out_, cell.glyph == kWideTail || (lead && !whole) ? U' ' : cell.glyph);
+        if (whole) ++c;  // the terminal moved two cells
       }
       cursorCol = end;
       cursorRow = row;

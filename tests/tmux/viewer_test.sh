@@ -494,6 +494,23 @@ run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin $work/évil*tad.dat"
 wait_for '/évil\\xE2\\x80\\xAEtad\.dat' 5 >/dev/null && pass || fail "bidi override in a name not escaped"
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
+# A wide (CJK) name: two cells a code point, so "? help" stays at the right
+# edge; typed at the prompt it opens, the cursor after its last cell.
+cp "$src/data/cube.dat" "$work/模型.dat"
+run "clear; LANG=C.UTF-8 LC_ALL=C.UTF-8 $bin $work/模型.dat"
+wait_for '/模型\.dat' 5 >/dev/null && pass || fail "wide name not shown"
+if screen | tail -n 1 | grep -qE '\? help$'; then pass; else fail "wide name pushed the status line: $(screen | tail -n 1)"; fi
+tm send-keys -t v o
+tm send-keys -t v C-u
+tm send-keys -t v -l "$work/模型.dat"
+wait_for 'open: .*模型\.dat' 5 >/dev/null || fail "prompt did not show the wide name"
+cursor_col=$(tm display -p -t v '#{cursor_x}')
+prompt_cells=$(screen | tail -n 1 | sed 's/ *$//' | python3 -c 'import sys, unicodedata as u; t=sys.stdin.read().rstrip("\n"); print(sum(2 if u.east_asian_width(c) in "WF" else 1 for c in t))')
+[ "$cursor_col" = "$prompt_cells" ] && pass || fail "prompt cursor at $cursor_col, text ends at $prompt_cells"
+tm send-keys -t v Enter
+wait_for 'opened .*模型\.dat' 5 >/dev/null && pass || fail "wide name typed at the prompt did not open"
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
 run "clear; LANG=C LC_ALL=C $bin $work/café.dat"
 wait_for '/caf\\xC3\\xA9\.dat' 5 >/dev/null && pass || fail "accented name in the C locale not escaped"
 tm send-keys -t v q
