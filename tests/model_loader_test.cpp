@@ -102,6 +102,8 @@ INSTANTIATE_TEST_SUITE_P(
                  ":6:1: content read as PLY: expected 'end_header' to close the PLY header"},
         BadModel{"ply_header_never_ends_after_a_property.ply",
                  ":4:1: expected 'end_header' to close the PLY header"},
+        BadModel{"obj_every_face_has_no_area.obj",
+                 ": all 3 of its faces have no area (corners on a line or at a point)"},
         BadModel{"off_counts_beyond_file_size.off", "the header promises 353535235358 vertices"},
         BadModel{"off_header_counts_huge.off", "the header promises 900000000 vertices"},
         BadModel{"obj_mtllib_absolute_path.obj", "refused to read '/etc/passwd': an absolute path"},

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string_view>
 
+#include "geometry/FaceNormal.h"
 #include "geometry/HeapPolicy.h"
 #include "io/AssimpImport.h"
 #include "io/ContentSniff.h"
@@ -185,6 +186,30 @@ Loaded<Mesh> WithDrawableSize(Loaded<Mesh> mesh) {
   return mesh;
 }
 
+// A model all of whose faces have no area (corners in a line or a point) and
+// no lines would draw a blank frame with no word why: refused instead.
+Loaded<Mesh> WithAFaceToDraw(Loaded<Mesh> mesh) {
+  if (!mesh.Ok()) return mesh;
+  const Mesh& m = mesh.Value();
+  if (!m.segments.empty()) return mesh;
+  for (size_t face = 0; face < m.FaceCount(); ++face) {
+    const std::span<const uint32_t> corners = m.Face(face);
+    const Vec3 normal =
+        NewellNormal(corners.size(), [&](size_t i) { return m.verticesFile[corners[i]]; });
+    if (normal.x != 0.0 || normal.y != 0.0 || normal.z != 0.0) return mesh;
+  }
+  const std::string faces = m.FaceCount() == 1
+                                ? "its one face has"
+                                : "all " + std::to_string(m.FaceCount()) + " of its faces have";
+  return LoadError{m.name, 0, 0,
+                   faces + " no area (corners on a line or at a point): nothing to draw"};
+}
+
+// What every load returns: a mesh the renderer can draw, or why not.
+Loaded<Mesh> Drawable(Loaded<Mesh> mesh) {
+  return WithAFaceToDraw(WithDrawableSize(std::move(mesh)));
+}
+
 Loaded<Mesh> LoadFileBytes(FileBytes bytes, const std::string& path, const LoadOptions& options);
 
 Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
@@ -235,8 +260,7 @@ bool UsesImporter(const std::string& path) {
 Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
                             const LoadOptions& options) {
   try {
-    return WithDrawableSize(
-        LoadBytes(FileBytes(std::move(bytes)), ModelPlace{name, "", ""}, options));
+    return Drawable(LoadBytes(FileBytes(std::move(bytes)), ModelPlace{name, "", ""}, options));
   } catch (const std::bad_alloc&) {
     return LoadError{name, 0, 0, "ran out of memory while loading"};
   } catch (const std::exception& e) {
@@ -247,7 +271,7 @@ Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
 Loaded<Mesh> LoadModelFileBytes(FileBytes bytes, const std::string& path,
                                 const LoadOptions& options) {
   try {
-    return WithDrawableSize(LoadFileBytes(std::move(bytes), path, options));
+    return Drawable(LoadFileBytes(std::move(bytes), path, options));
   } catch (const std::bad_alloc&) {
     return LoadError{path, 0, 0, "ran out of memory while loading"};
   } catch (const std::exception& e) {
@@ -257,7 +281,7 @@ Loaded<Mesh> LoadModelFileBytes(FileBytes bytes, const std::string& path,
 
 Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& options) {
   try {
-    return WithDrawableSize(LoadChecked(path, options));
+    return Drawable(LoadChecked(path, options));
   } catch (const std::bad_alloc&) {
     return LoadError{path, 0, 0,
                      "ran out of memory while loading (the memory budget is " +
