@@ -67,6 +67,23 @@ TEST(HostileModels, PlyHeaderThatNeverEndsIsRefusedUnderAnyName) {
           << name << ": " << mesh.Error().ToString();
     }
   }
+  // Counts are checked from the line that ends the header, not from the
+  // first "end_header" in it, and from where Assimp starts reading.
+  const std::string counts =
+      "ply\nformat ascii end_header1.0\nelement vertex 2000000000\nproperty float x\n"
+      "end_header\n0\n";
+  for (const std::string& bytes : {counts, "\n" + counts}) {
+    const Loaded<Mesh> mesh = LoadModelBytes(bytes, "m.glb");
+    ASSERT_FALSE(mesh.Ok());
+    EXPECT_NE(mesh.Error().message.find("the header promises 2000000000 vertex"), std::string::npos)
+        << mesh.Error().ToString();
+  }
+  // A NUL in the header would split a line for Assimp alone.
+  const Loaded<Mesh> nul = LoadModelBytes(
+      std::string("ply\nformat ascii 1.0\ncomment x\0element vertex 9\nend_header\n", 59), "m");
+  ASSERT_FALSE(nul.Ok());
+  EXPECT_EQ(nul.Error().line, 3) << nul.Error().ToString();
+  EXPECT_NE(nul.Error().message.find("holds a NUL"), std::string::npos) << nul.Error().ToString();
   // Assimp's own magic check is case-blind and skips a leading line end.
   EXPECT_FALSE(LoadModelBytes("PlY\nformat ascii 1.0\n", "m.glb").Ok());
   const Loaded<Mesh> afterLineEnd = LoadModelBytes("\r\nply\nformat ascii 1.0\n", "m.glb");
@@ -100,6 +117,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "the file has 259 (cut short?)"},
         BadModel{"ply_header_never_ends_named_glb.glb",
                  ":6:1: content read as PLY: expected 'end_header' to close the PLY header"},
+        BadModel{"ply_end_header_word_inside_a_line_named_glb.glb",
+                 "content read as PLY: the header promises 2000000000 vertex"},
         BadModel{"ply_header_never_ends_after_a_property.ply",
                  ":4:1: expected 'end_header' to close the PLY header"},
         BadModel{"obj_every_face_has_no_area.obj",

@@ -107,9 +107,27 @@ double PlyTypeBytes(std::string_view type) {
   return 1;
 }
 
+// Where the line that ends a PLY header starts (its first word "end_header",
+// as PlyReader and Assimp's parser find it); npos when there is none.
+size_t PlyHeaderEnd(std::string_view bytes) {
+  for (size_t line = bytes.find('\n'); line != std::string_view::npos;
+       line = bytes.find('\n', line)) {
+    ++line;
+    const size_t word = bytes.find_first_not_of(" \t", line);
+    if (word == std::string_view::npos) return std::string_view::npos;
+    if (bytes.substr(word, 10) != "end_header") continue;
+    const size_t after = word + 10;
+    if (after == bytes.size() || bytes[after] == ' ' || bytes[after] == '\t' ||
+        bytes[after] == '\r' || bytes[after] == '\n') {
+      return word;
+    }
+  }
+  return std::string_view::npos;
+}
+
 std::optional<std::string> CheckPly(std::string_view bytes) {
   if (bytes.substr(0, 3) != "ply") return std::nullopt;
-  const size_t end = bytes.find("end_header");
+  const size_t end = PlyHeaderEnd(bytes);
   if (end == std::string_view::npos) return std::nullopt;
   const size_t bodyStart = std::min(bytes.find('\n', end), bytes.size());
   const double body = static_cast<double>(bytes.size() - bodyStart);

@@ -11,6 +11,7 @@
 
 #include "geometry/DropUnusedVertices.h"
 #include "geometry/HugePages.h"
+#include "io/LoadBudget.h"
 
 namespace termshade {
 namespace {
@@ -596,10 +597,30 @@ std::optional<LoadError> CheckPlyHeaderForImporter(std::string_view bytes,
   // Step 2: a header this reader ends. Assimp splits lines at more bytes than
   // '\n' but starts a line after every '\n', so it reaches the same 'end_header'.
   Loaded<Header> parsed = ParseHeader(text, path);
-  if (parsed.Ok()) return std::nullopt;
-  LoadError error = parsed.Error();
-  if (start > 0 && error.line > 0) ++error.line;
-  return error;
+  const int lineShift = start > 0 ? 1 : 0;
+  if (!parsed.Ok()) {
+    LoadError error = parsed.Error();
+    if (error.line > 0) error.line += lineShift;
+    return error;
+  }
+  // Step 3: the header's counts against the bytes after it, from where Assimp starts.
+  if (auto problem = CheckHeaderCounts("ply", text)) return LoadError{path, 0, 0, *problem};
+  // Step 4: no byte at which Assimp ends a line and this reader does not (NUL,
+  // form feed, a carriage return not before '\n'): it could hide an element
+  // line from the header counts' check ("comment\0element vertex 2000000000").
+  const std::string_view header = text.substr(0, parsed.Value().dataOffset);
+  int line = 1 + lineShift;
+  for (size_t i = 0; i < header.size(); ++i) {
+    const char c = header[i];
+    if (c == '\n') ++line;
+    const bool crBeforeNewline = c == '\r' && i + 1 < header.size() && header[i + 1] == '\n';
+    if (c == '\0' || c == '\f' || (c == '\r' && !crBeforeNewline)) {
+      return LoadError{path, line, 1,
+                       "the PLY header holds a NUL, form feed or lone carriage return; expected "
+                       "text lines up to 'end_header'"};
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace termshade

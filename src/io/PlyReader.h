@@ -25,9 +25,10 @@ std::optional<Loaded<Mesh>> ReadPly(std::string_view bytes, const std::string& p
 
 /// For bytes about to go to Assimp under any name: its PLY importer takes any
 /// content whose first line begins with "ply" (any case), and Assimp 5.2.5
-/// loops forever on a header without 'end_header'. Such content must have a
-/// header this reader accepts; the located error otherwise, nullopt when it
-/// has or is not PLY.
+/// loops forever on a header without 'end_header', and splits header lines
+/// at NUL and form feed too. Such content must have a header this reader
+/// accepts, in plain text lines; the located error otherwise, nullopt when
+/// it has or is not PLY.
 std::optional<LoadError> CheckPlyHeaderForImporter(std::string_view bytes, const std::string& path);
 
 }  // namespace termshade
