@@ -33,6 +33,11 @@ bool IsZipBasedFormat(const std::string& format) {
          format == "amf" || format == "ifczip";
 }
 
+std::string ToUpper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
 std::string Normalized(std::string format) {
   if (!format.empty() && format.front() == '.') format.erase(0, 1);
   std::transform(format.begin(), format.end(), format.begin(),
@@ -71,12 +76,18 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   const auto fail = [&](std::string message) {
     return LoadError{place.displayName, 0, 0, std::move(message)};
   };
-  // Counts in the header against the bytes that follow it.
+  // Counts in the header against the bytes that follow it (under another
+  // name, the message says which format the content was read as).
   const auto headerProblem = [&](std::string_view read) -> std::optional<std::string> {
+    const auto as = [&](const char* checked, std::optional<std::string> problem) {
+      if (problem && format != checked)
+        *problem = "content read as " + ToUpper(checked) + ": " + *problem;
+      return problem;
+    };
     if (format == "off" || format.empty()) {
-      if (auto problem = CheckHeaderCounts("off", read)) return problem;
+      if (auto problem = as("off", CheckHeaderCounts("off", read))) return problem;
     }
-    return CheckHeaderCounts("ply", read);
+    return as("ply", CheckHeaderCounts("ply", read));
   };
   // Step 1: the header's counts, for our readers.
   if (auto problem = headerProblem(bytes.View())) return fail(std::move(*problem));
