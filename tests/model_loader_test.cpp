@@ -91,6 +91,28 @@ TEST(HostileModels, PlyHeaderThatNeverEndsIsRefusedUnderAnyName) {
   EXPECT_EQ(afterLineEnd.Error().line, 3) << afterLineEnd.Error().ToString();
 }
 
+// Assimp's OpenDDL parser reads past its buffer on an unclosed structure (a
+// libFuzzer heap-buffer-overflow): content its OpenGEX importer would sniff
+// must be closed; closed content, and a glTF that mentions a token, pass.
+TEST(HostileModels, OpenGexContentMustBeClosed) {
+  for (const char* bytes : {"a{indexarray", "indexarray ", "nmetric ", "Metric {} x",
+                            "Metric {float {1}", "Metric (a = \"}\") {", "Metric {} /* x"}) {
+    for (const char* name : {"m", "m.ogex", "m.glb", "m.gltf"}) {
+      const Loaded<Mesh> mesh = LoadModelBytes(bytes, name);
+      ASSERT_FALSE(mesh.Ok()) << bytes << " as " << name;
+      EXPECT_NE(mesh.Error().message.find("read as OpenGEX"), std::string::npos)
+          << bytes << " as " << name << ": " << mesh.Error().ToString();
+    }
+  }
+  const std::string closed = "Metric (key = \"up\") {string {\"z}\"}} // end {\n";
+  const Loaded<Mesh> mesh = LoadModelBytes(closed, "m.ogex");
+  EXPECT_TRUE(mesh.Ok() || mesh.Error().message.find("read as OpenGEX") == std::string::npos)
+      << mesh.Error().ToString();
+  const Loaded<Mesh> gltf = LoadModelBytes("{\"asset\": {\"generator\": \"metric {\"}", "m.gltf");
+  EXPECT_TRUE(gltf.Ok() || gltf.Error().message.find("read as OpenGEX") == std::string::npos)
+      << gltf.Error().ToString();
+}
+
 TEST_P(HostileModels, AreRefusedWithAMessageNamingTheFile) {
   const std::string path = SourcePath(std::string("tests/models/bad/") + GetParam().name);
   const std::string error = ErrorOf(std::string("tests/models/bad/") + GetParam().name);
@@ -119,6 +141,10 @@ INSTANTIATE_TEST_SUITE_P(
                  ":6:1: content read as PLY: expected 'end_header' to close the PLY header"},
         BadModel{"ply_end_header_word_inside_a_line_named_glb.glb",
                  "content read as PLY: the header promises 2000000000 vertex"},
+        BadModel{"opengex_structure_never_closed",
+                 "read as OpenGEX: a structure is never closed (unbalanced brackets)"},
+        BadModel{"opengex_geometry_node_never_closed.ogex",
+                 "read as OpenGEX: a structure is never closed"},
         BadModel{"ply_header_never_ends_after_a_property.ply",
                  ":4:1: expected 'end_header' to close the PLY header"},
         BadModel{"obj_every_face_has_no_area.obj",

@@ -20,6 +20,7 @@
 #include "io/FileBytes.h"
 #include "io/FileBytesLoader.h"
 #include "io/LoadBudget.h"
+#include "io/OpenGexGuard.h"
 #include "io/OwnReaders.h"
 #include "io/PlyReader.h"
 #include "io/RegularFile.h"
@@ -138,6 +139,7 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
     if (format != "ply") problem->message = "content read as PLY: " + problem->message;
     return *problem;
   }
+  if (auto problem = CheckOpenGexStructure(text, format)) return fail(std::move(*problem));
   return ImportWithAssimp(source, std::move(text), options);
 }
 
