@@ -145,6 +145,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "read as OpenGEX: a structure is never closed (unbalanced brackets)"},
         BadModel{"opengex_geometry_node_never_closed.ogex",
                  "read as OpenGEX: a structure is never closed"},
+        BadModel{"q3d_vertex_count_beyond_file_size.q3o",
+                 "read as Quick3D: a count of 201326592 vertices is more than the bytes after it "
+                 "can hold"},
+        BadModel{"q3d_material_count_2to30_unnamed",
+                 "read as Quick3D: a count of 1073741824 materials"},
+        BadModel{"ply_vertex_list_length_negative.ply",
+                 ":8: vertex 0 has an impossible list length"},
         BadModel{"ply_header_never_ends_after_a_property.ply",
                  ":4:1: expected 'end_header' to close the PLY header"},
         BadModel{"obj_every_face_has_no_area.obj",

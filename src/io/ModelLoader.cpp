@@ -23,6 +23,7 @@
 #include "io/OpenGexGuard.h"
 #include "io/OwnReaders.h"
 #include "io/PlyReader.h"
+#include "io/Quick3dGuard.h"
 #include "io/RegularFile.h"
 
 namespace termshade {
@@ -140,6 +141,7 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
     return *problem;
   }
   if (auto problem = CheckOpenGexStructure(text, format)) return fail(std::move(*problem));
+  if (auto problem = CheckQuick3dCounts(text)) return fail(std::move(*problem));
   return ImportWithAssimp(source, std::move(text), options);
 }
 

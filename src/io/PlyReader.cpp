@@ -397,6 +397,9 @@ std::optional<LoadError> ReadVertices(const Element& element, Reader& reader) {
       if (property.isList && !reader.cursor.Read(property.countType, count)) {
         return reader.Error("the file ends inside vertex " + std::to_string(v));
       }
+      if (!(count >= 0.0) || count > 1e6) {
+        return reader.Error("vertex " + std::to_string(v) + " has an impossible list length");
+      }
       for (uint64_t i = 0; i < static_cast<uint64_t>(count); ++i) {
         if (!reader.cursor.Read(property.type, value)) {
           return reader.Error("expected a number in vertex " + std::to_string(v));

@@ -26,7 +26,7 @@ for f in tests/models/bad/*.ply; do seed 1 "$f"; done
 for f in tests/models/bad/*.off; do seed 3 "$f"; done
 for f in tests/models/bad/*.gltf; do seed 4 "$f"; done
 for f in tests/models/bad/*.glb; do seed 5 "$f"; done
-for f in tests/models/bad/opengex_*; do seed 7 "$f"; done
+for f in tests/models/bad/opengex_* tests/models/bad/q3d_*; do seed 7 "$f"; done
 printf '\x02solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n' >"$work/model/ascii.stl"
 printf '\x03OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$work/model/triangle.off"
 run() {  # run FUZZER SECONDS CORPUS
