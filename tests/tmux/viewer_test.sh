@@ -26,6 +26,9 @@ start_shell() {  # start_shell COLS ROWS
 }
 
 screen() { tm capture-pane -t v -p; }
+# The sanitizer build runs several times slower, more so beside other tests.
+wait_scale=1
+[ -n "${TERMSHADE_SANITIZED:-}" ] && wait_scale=4
 # The screen with wrapped lines joined: a long path in a message may wrap.
 joined_screen() { tm capture-pane -t v -p -J; }
 
@@ -39,8 +42,8 @@ note_glyphs() {
   if [ -n "$shown" ]; then last_glyphs=$shown; fi
 }
 
-wait_for() {  # wait_for REGEX SECONDS: until the screen matches
-  local deadline=$((SECONDS + $2))
+wait_for() {  # wait_for REGEX SECONDS: until the screen matches (4x SECONDS under the sanitizers)
+  local deadline=$((SECONDS + $2 * ${wait_scale}))
   while [ $SECONDS -le "$deadline" ]; do
     if joined_screen | grep -qE -- "$1"; then note_glyphs; return 0; fi
     sleep 0.1
