@@ -82,7 +82,16 @@ frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line =
 run() { tm send-keys -t v -l -- "$1"; tm send-keys -t v Enter; }
 
 # Types TEXT at the viewer's open prompt (o), then KEY (Enter unless given).
+# Until no load runs (the status line says "loading", "preparing" or
+# "turning up axis" while one does): `o` during a load is refused, and the
+# text typed after it would be taken as keys.
+until_loaded() {
+  local deadline=$((SECONDS + 10 * wait_scale))
+  while [ $SECONDS -le "$deadline" ] &&
+    screen | tail -n 1 | grep -qE '^(loading|preparing|turning up axis) '; do sleep 0.1; done
+}
 at_prompt() {  # at_prompt TEXT [KEY]
+  until_loaded
   tm send-keys -t v o
   tm send-keys -t v -l -- "$1"
   tm send-keys -t v "${2:-Enter}"
