@@ -44,6 +44,10 @@ struct RenderVariant {
   bool clusters = true;
   /// Whole clusters that face away or cover no sample are skipped (exact).
   bool clusterCulling = true;
+  /// One-sample zbuffer and cull frames of a scene with a hierarchy
+  /// (Scene::bvh) walk it (src/raster/HierarchyStage) where that is exact for
+  /// the view; false: cluster by cluster. The same frame either way.
+  bool hierarchy = true;
   /// Several samples a cell on one thread: drawn cell by cell into the glyph
   /// stage's layout (src/raster/SampledRasterizer); false: drawn as a one-sample
   /// frame k x m times the size, then reordered. The same samples either way.

@@ -108,6 +108,7 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   RenderStats stats;
   if (DrawsByCluster(scene, resolved)) {
     stats.trianglesDrawn = DrawClusters(scene, camera, resolved, depth, cells);
+    stats.byHierarchy = drewByHierarchy_;
     stats.facesVisible = ShadeCells(scene, resolved, cells);
     return stats;
   }
@@ -343,6 +344,10 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   frame.sink = sink;
   // The scanline variant steps rows in float from its first row: one band only.
   const int threads = options.variant.scanline ? 1 : ResolvedThreadCount(options.threads);
+  drewByHierarchy_ =
+      options.variant.hierarchy && scene.bvh && HierarchyStage::Applies(scene, *scene.bvh, frame);
+  if (drewByHierarchy_)
+    return hierarchyStage_.Draw(scene, *scene.bvh, frame, threads, depth, cells);
   return clusterStage_.Draw(scene, frame, threads, depth, cells);
 }
 

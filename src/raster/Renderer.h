@@ -12,6 +12,7 @@
 #include "raster/ClusterStage.h"
 #include "raster/DepthBuffer.h"
 #include "raster/GlyphStage.h"
+#include "raster/HierarchyStage.h"
 #include "raster/RenderOptions.h"
 #include "raster/SampleFrame.h"
 #include "raster/TriangleRasterizer.h"
@@ -22,6 +23,7 @@ namespace termshade {
 struct RenderStats {
   int trianglesDrawn = 0;  ///< triangles rasterized: facing the eye (or culling off), near a sample
   int facesVisible = 0;    ///< distinct faces seen in at least one cell
+  bool byHierarchy = false;  ///< the surfaces were found by walking Scene::bvh (HierarchyStage)
 };
 
 /// The method actually drawn: auto becomes cull or zbuffer for the scene.
@@ -85,6 +87,8 @@ class Renderer {
   SampleFrame sampleFrame_;  ///< the same samples cell by cell: what the glyph stage reads
   GlyphStage glyphStage_;
   ClusterStage clusterStage_;
+  HierarchyStage hierarchyStage_;
+  bool drewByHierarchy_ = false;  ///< the last DrawClusters walked the hierarchy
   SampleGrid lastGrid_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;

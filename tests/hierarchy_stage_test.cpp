@@ -1,0 +1,255 @@
+// Issue 9: the triangle hierarchy's bounds hold (every corner in its leaf's
+// and every ancestor's box, every normal in their cones, the facing verdicts
+// true for every face), and a frame drawn by walking it is bit for bit the
+// frame of the plain face-by-face loop (faces, glyphs, depth, counts) on the
+// shipped scenes, hard cases and spheres, at several sizes, views, methods
+// and thread counts, including views where the walk does not apply.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "geometry/FitCamera.h"
+#include "geometry/TriangleBvh.h"
+#include "io/SceneGenerators.h"
+#include "raster/Renderer.h"
+#include "support/TestSupport.h"
+
+namespace termshade {
+namespace {
+
+std::shared_ptr<const TriangleBvh> Hierarchy(const Scene& scene) {
+  return std::make_shared<const TriangleBvh>(BuildTriangleBvh(scene));
+}
+
+// The point's coordinates in the node's axes, as far out as the node lets them be (<= 1 inside).
+double Reach(const BvhNode& node, Vec3 p) {
+  const Vec3 a = node.Axis(0), b = node.Axis(1), c = node.Axis(2);
+  const Vec3 bc = Cross(b, c), ca = Cross(c, a), ab = Cross(a, b);
+  const double det = Dot(a, bc);
+  const Vec3 d = p - node.Center();
+  const double s[3] = {Dot(bc, d) / det, Dot(ca, d) / det, Dot(ab, d) / det};
+  double reach = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    reach = std::max(reach, node.half[k] > 0.0F ? std::fabs(s[k]) / node.half[k]
+                                                : (std::fabs(s[k]) > 0.0 ? INFINITY : 0.0));
+  }
+  return reach;
+}
+
+struct Visit {
+  uint32_t node;
+  std::vector<uint32_t> ancestors;
+};
+
+// Calls leaf(node, ancestors) for every leaf, depth-first.
+template <typename Leaf>
+void ForEachLeaf(const TriangleBvh& bvh, Leaf&& leaf) {
+  std::vector<Visit> stack{{0, {}}};
+  while (!stack.empty()) {
+    Visit visit = std::move(stack.back());
+    stack.pop_back();
+    const BvhNode& node = bvh.nodes[visit.node];
+    if (node.count > 0) {
+      leaf(node, visit.ancestors);
+      continue;
+    }
+    visit.ancestors.push_back(visit.node);
+    stack.push_back({node.first, visit.ancestors});
+    stack.push_back({visit.node + 1, visit.ancestors});
+  }
+}
+
+void ExpectBoundsHold(const Scene& scene, const std::string& what) {
+  const TriangleBvh bvh = BuildTriangleBvh(scene);
+  std::vector<int> seen(scene.triangles.size(), 0);
+  ForEachLeaf(bvh, [&](const BvhNode& leaf, const std::vector<uint32_t>& ancestors) {
+    for (uint32_t t = leaf.first; t < leaf.first + leaf.count; ++t) {
+      ++seen[t];
+      for (const uint32_t v : scene.triangles[t].vertices) {
+        const Vec3 p = scene.verticesWorld[v];
+        ASSERT_LE(Reach(leaf, p), 1.0) << what << ": triangle " << t << " outside its leaf";
+        for (const uint32_t a : ancestors) {
+          ASSERT_LE(Reach(bvh.nodes[a], p), 1.0)
+              << what << ": triangle " << t << " outside node " << a;
+        }
+      }
+      const FacePlane& plane = scene.facePlanesWorld[scene.TriangleFace(t)];
+      if (Dot(plane.normal, plane.normal) == 0.0) continue;
+      for (const uint32_t a : ancestors) {
+        const BvhNode& node = bvh.nodes[a];
+        if (!(node.coneCos > 0.0F) || node.coneCos == BvhNode::kAllDegenerate) continue;
+        const Vec3 axis = node.Axis(2) * (1.0 / Length(node.Axis(2)));
+        EXPECT_GE(Dot(plane.normal, axis), node.coneCos) << what << ": node " << a;
+        const double height = Dot(plane.normal, node.Center()) - plane.offset;
+        EXPECT_LE(height, node.heightMax) << what << ": node " << a;
+        EXPECT_GE(height, node.heightMin) << what << ": node " << a;
+      }
+    }
+  });
+  for (size_t t = 0; t < seen.size(); ++t) {
+    ASSERT_EQ(seen[t], 1) << what << ": triangle " << t << " in " << seen[t] << " leaves";
+  }
+}
+
+TEST(TriangleBvh, EveryCornerAndNormalLiesInsideItsNodes) {
+  for (const std::string& name : GeneratedSceneNames()) {
+    ExpectBoundsHold(PrepareScene(*GenerateScene(name)), name);
+  }
+  ExpectBoundsHold(PrepareScene(GenerateTriangleSphere(20000)), "sphere 20k");
+  Mesh huge =
+      test::QuadMesh({{{{0, -1e12, -1e12}, {0, 1e12, -1e12}, {0, 1e12, 1e12}, {0, -1e12, 1e12}}}});
+  ExpectBoundsHold(PrepareScene(huge), "huge quad");
+}
+
+// kAway and kToward hold for every face below the node, from eyes all around
+// and close to the model.
+TEST(TriangleBvh, FacingVerdictsHoldForEveryFace) {
+  const Scene scene = PrepareScene(GenerateTriangleSphere(5000));
+  const TriangleBvh bvh = BuildTriangleBvh(scene);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+  int away = 0, toward = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec3 eye{coordinate(random), coordinate(random), coordinate(random)};
+    std::vector<std::pair<uint32_t, ClusterFacing>> stack{{0, ClusterFacing::kMixed}};
+    while (!stack.empty()) {
+      auto [index, above] = stack.back();
+      stack.pop_back();
+      const BvhNode& node = bvh.nodes[index];
+      ClusterFacing facing = NodeFacing(node, eye);
+      if (above != ClusterFacing::kMixed) facing = above;  // a verdict holds for the whole subtree
+      away += facing == ClusterFacing::kAway;
+      toward += facing == ClusterFacing::kToward;
+      if (node.count == 0) {
+        stack.push_back({node.first, facing});
+        stack.push_back({index + 1, facing});
+        continue;
+      }
+      for (uint32_t t = node.first; t < node.first + node.count; ++t) {
+        const bool front = scene.facePlanesWorld[scene.TriangleFace(t)].FacesPoint(eye);
+        if (facing == ClusterFacing::kAway) {
+          ASSERT_FALSE(front) << "triangle " << t;
+        }
+        if (facing == ClusterFacing::kToward) {
+          ASSERT_TRUE(front) << "triangle " << t;
+        }
+      }
+    }
+  }
+  EXPECT_GT(away, 0);  // the verdicts are not all "mixed"
+  EXPECT_GT(toward, 0);
+}
+
+struct Drawn {
+  CellBuffer cells;
+  DepthBuffer depth;
+  RenderStats stats;
+};
+
+struct View {
+  double theta, phi, rhoScale;  // rhoScale < 1: the eye close to or inside the model
+};
+
+Drawn Draw(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
+           const RenderOptions& options) {
+  ViewParams params = DefaultView(scene.diagonalModelUnits);
+  params.theta = view.theta;
+  params.phi = view.phi;
+  params.rho *= view.rhoScale;
+  const Camera camera = FitCamera(scene, params, width, height, 2.0);
+  Drawn drawn;
+  drawn.cells.Resize(width, height);
+  drawn.depth.Resize(width, height);
+  drawn.stats = renderer.Render(scene, camera, options, drawn.depth, drawn.cells);
+  return drawn;
+}
+
+void ExpectSame(const Drawn& expected, const Drawn& actual, const std::string& what) {
+  ASSERT_EQ(expected.cells.FaceNumbers(), actual.cells.FaceNumbers()) << what;
+  ASSERT_EQ(expected.cells.Glyphs(), actual.cells.Glyphs()) << what;
+  const size_t count = expected.cells.FaceNumbers().size();
+  for (size_t i = 0; i < count; ++i) {
+    ASSERT_EQ(std::bit_cast<uint32_t>(expected.depth.At(i)),
+              std::bit_cast<uint32_t>(actual.depth.At(i)))
+        << what << ": depth of cell " << i;
+  }
+  EXPECT_EQ(expected.stats.trianglesDrawn, actual.stats.trianglesDrawn) << what;
+  EXPECT_EQ(expected.stats.facesVisible, actual.stats.facesVisible) << what;
+}
+
+const std::vector<View> kViews{{0.3, 1.3, 1.0},  {2.1, 0.4, 1.0},  {4.0, 2.6, 2.5},
+                               {1.0, 1.5, 0.35}, {5.5, 1.0, 0.12}, {3.0, 0.05, 0.6}};
+
+// Returns how many frames the walk drew.
+int ExpectHierarchyFramesMatch(const std::string& name, Scene scene,
+                               const std::vector<int>& sizes) {
+  scene.bvh = Hierarchy(scene);
+  int walked = 0;
+  for (size_t s = 0; s + 1 < sizes.size(); s += 2) {
+    const int width = sizes[s], height = sizes[s + 1];
+    for (const Method method : {Method::kZBuffer, Method::kCull}) {
+      for (const bool keepDepth : {true, false}) {
+        for (const View& view : kViews) {
+          RenderOptions reference;
+          reference.method = method;
+          reference.keepDepth = keepDepth;
+          reference.variant.clusters = false;  // the plain face loop
+          Renderer plain;
+          const Drawn expected = Draw(plain, scene, view, width, height, reference);
+          for (const int threads : {1, 2, 3}) {
+            RenderOptions options = reference;
+            options.variant.clusters = true;
+            options.threads = threads;
+            options.threadsFromTriangles = 0;
+            Renderer renderer;
+            const std::string what =
+                name + " " + std::to_string(width) + "x" + std::to_string(height) + " " +
+                std::string(MethodName(method)) + " theta " + std::to_string(view.theta) +
+                " rho x" + std::to_string(view.rhoScale) + " threads " + std::to_string(threads) +
+                (keepDepth ? " depth" : "");
+            for (int repeat = 0; repeat < 2; ++repeat) {  // the second reuses its buffers
+              const Drawn actual = Draw(renderer, scene, view, width, height, options);
+              ExpectSame(expected, actual, what);
+              walked += actual.stats.byHierarchy ? 1 : 0;
+            }
+          }
+        }
+      }
+    }
+  }
+  return walked;
+}
+
+TEST(HierarchyStage, SmallScenesMatchTheFaceLoop) {
+  for (const std::string& name : GeneratedSceneNames()) {
+    ExpectHierarchyFramesMatch(name, PrepareScene(*GenerateScene(name)), {80, 24, 37, 11});
+  }
+  const std::array<Vec3, 4> quad{{{0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1}}};
+  ExpectHierarchyFramesMatch("coplanar duplicates",
+                             PrepareScene(test::QuadMesh({quad, quad, quad})), {80, 24});
+  ExpectHierarchyFramesMatch("crossing quads",
+                             PrepareScene(test::QuadMesh({
+                                 {{{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1}}},
+                                 {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
+                             })),
+                             {80, 24});
+  Mesh nan = test::QuadMesh({quad});
+  nan.verticesFile.push_back({NAN, 0, 0});
+  nan.AddFace(std::array<uint32_t, 3>{0, 1, 4});
+  nan.AddFace(std::array<uint32_t, 3>{0, 0, 1});  // collinear
+  ExpectHierarchyFramesMatch("nan and collinear", PrepareScene(nan), {80, 24});
+}
+
+TEST(HierarchyStage, Sphere200kMatchesTheFaceLoopAndIsWalked) {
+  const int walked = ExpectHierarchyFramesMatch(
+      "sphere 200k", PrepareScene(GenerateTriangleSphere(200000)), {160, 48, 61, 7});
+  EXPECT_GT(walked, 0);  // not only the views where the walk does not apply
+}
+
+}  // namespace
+}  // namespace termshade
