@@ -6,6 +6,7 @@
 
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
+#include "geometry/TriangleBvh.h"
 #include "io/ModelLoader.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
@@ -21,6 +22,7 @@ struct FrameCase {
   int threads;
   bool clusters;
   bool culling;
+  HierarchyUse hierarchy;
 };
 
 struct BenchScene {
@@ -48,6 +50,7 @@ std::vector<double> MedianMs(const Scene& scene, int width, int height,
       options.threads = cases[k].threads;
       options.variant.clusters = cases[k].clusters;
       options.variant.clusterCulling = cases[k].culling;
+      options.variant.hierarchy = cases[k].hierarchy;
       const Clock::time_point start = Clock::now();
       renderers[k].Render(scene, camera, options, depth, cells);
       const double elapsed =
@@ -83,18 +86,28 @@ int RunFrameBench(const FrameBenchOptions& options) {
                       PrepareScene(GenerateTriangleSphere(triangles))});
   }
   const std::vector<FrameCase> cases{
-      {"1 thread", 1, true, true},
-      {"all threads", all, true, true},
-      {"1 thread, no culling", 1, true, false},
-      {"all, no culling", all, true, false},
-      {"face loop (before)", 1, false, false},
+      {"hierarchy, 1 thread", 1, true, true, HierarchyUse::kAlways},
+      {"hierarchy, all", all, true, true, HierarchyUse::kAlways},
+      {"clusters, 1 thread", 1, true, true, HierarchyUse::kNever},
+      {"clusters, all", all, true, true, HierarchyUse::kNever},
+      {"1 thread, no culling", 1, true, false, HierarchyUse::kNever},
+      {"all, no culling", all, true, false, HierarchyUse::kNever},
+      {"face loop (before)", 1, false, false, HierarchyUse::kNever},
   };
   std::printf("| model | triangles | cells |");
   for (const FrameCase& c : cases) std::printf(" %s, ms |", c.name);
-  std::printf(" all / 1 |\n|---|---|---|");
-  for (size_t k = 0; k <= cases.size(); ++k) std::printf("---|");
+  std::printf(" hierarchy / clusters, all | hierarchy: build ms, MB |\n|---|---|---|");
+  for (size_t k = 0; k <= cases.size() + 1; ++k) std::printf("---|");
   std::printf("\n");
-  for (const BenchScene& named : scenes) {
+  for (BenchScene& named : scenes) {
+    // Every scene gets its hierarchy here, below kHierarchyFromTriangles too, to show the
+    // crossover.
+    const Clock::time_point buildStart = Clock::now();
+    auto bvh = std::make_shared<const TriangleBvh>(BuildTriangleBvh(named.scene));
+    const double buildMs =
+        std::chrono::duration<double, std::milli>(Clock::now() - buildStart).count();
+    const double megabytes = static_cast<double>(bvh->Bytes()) / (1 << 20);
+    named.scene.hierarchy.Attach(std::move(bvh));
     for (const std::string& size : options.sizes) {
       int width = 0, height = 0;
       if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1) {
@@ -105,7 +118,7 @@ int RunFrameBench(const FrameBenchOptions& options) {
       std::printf("| %s | %zu | %s |", named.name.c_str(), named.scene.triangles.size(),
                   size.c_str());
       for (const double m : ms) std::printf(" %.3f |", m);
-      std::printf(" %.2f |\n", ms[1] / ms[0]);
+      std::printf(" %.2f | %.0f, %.1f |\n", ms[1] / ms[3], buildMs, megabytes);
       std::fflush(stdout);
     }
   }

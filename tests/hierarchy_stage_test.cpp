@@ -6,6 +6,7 @@
 // and thread counts, including views where the walk does not apply.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <memory>
@@ -145,6 +146,21 @@ TEST(TriangleBvh, FacingVerdictsHoldForEveryFace) {
   EXPECT_GT(toward, 0);
 }
 
+// A hierarchy serves only the triangles it was built over; copies of a scene share it.
+TEST(SceneHierarchy, ServesOnlyItsOwnScene) {
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(2000));
+  const Scene other = PrepareScene(GenerateTriangleSphere(2000));
+  EXPECT_EQ(sphere.hierarchy.Get(sphere), nullptr);
+  const Scene copy = sphere;  // before the attach: shares the slot, not the triangles
+  sphere.hierarchy.Attach(Hierarchy(sphere));
+  ASSERT_NE(sphere.hierarchy.Get(sphere), nullptr);
+  other.hierarchy.Attach(Hierarchy(sphere));  // built for another scene's triangles
+  EXPECT_EQ(other.hierarchy.Get(other), nullptr);
+  EXPECT_EQ(copy.hierarchy.Get(copy), nullptr);  // its own triangle array: not served
+  std::atomic<bool> cancel{true};
+  EXPECT_TRUE(BuildTriangleBvh(sphere, &cancel).Empty());
+}
+
 struct Drawn {
   CellBuffer cells;
   DepthBuffer depth;
@@ -188,7 +204,7 @@ const std::vector<View> kViews{{0.3, 1.3, 1.0},  {2.1, 0.4, 1.0},  {4.0, 2.6, 2.
 // Returns how many frames the walk drew.
 int ExpectHierarchyFramesMatch(const std::string& name, Scene scene,
                                const std::vector<int>& sizes) {
-  scene.bvh = Hierarchy(scene);
+  scene.hierarchy.Attach(Hierarchy(scene));
   int walked = 0;
   for (size_t s = 0; s + 1 < sizes.size(); s += 2) {
     const int width = sizes[s], height = sizes[s + 1];
@@ -206,6 +222,7 @@ int ExpectHierarchyFramesMatch(const std::string& name, Scene scene,
             options.variant.clusters = true;
             options.threads = threads;
             options.threadsFromTriangles = 0;
+            options.variant.hierarchy = HierarchyUse::kAlways;
             Renderer renderer;
             const std::string what =
                 name + " " + std::to_string(width) + "x" + std::to_string(height) + " " +

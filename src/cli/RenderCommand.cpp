@@ -11,6 +11,7 @@
 
 #include "geometry/FitCamera.h"
 #include "geometry/LevelOfDetail.h"
+#include "geometry/TriangleBvh.h"
 #include "io/FrameFormats.h"
 #include "io/ModelLoader.h"
 #include "io/OutputFile.h"
@@ -20,6 +21,10 @@
 
 namespace termshade {
 namespace {
+
+// Frames of one scene from which render builds its hierarchy: at 2M
+// triangles the build costs about what 30 frames save (bench frame).
+constexpr int kHierarchyFromFrames = 30;
 
 int UsageError(const std::string& message) {
   std::cerr << "termshade render: " << message << "\n";
@@ -183,6 +188,11 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       continue;
     }
     const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
+    // A long turntable of a big scene: the hierarchy pays for its build (same frames).
+    if (options.frames >= kHierarchyFromFrames &&
+        scene.triangles.size() >= kHierarchyFromTriangles) {
+      scene.hierarchy.Attach(std::make_shared<const TriangleBvh>(BuildTriangleBvh(scene)));
+    }
     std::optional<DetailLevels> levels;
     if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));
     if (const auto problem = openOutput()) return outputFailed(*problem);

@@ -370,7 +370,9 @@ int Run(int argc, char** argv) {
       ->type_name("DIR");
   termshade::FrameBenchOptions frameBench;
   CLI::App* frameCommand = benchCommand->add_subcommand(
-      "frame", "frame time by triangles x cells: 1 thread against all, cluster culling on and off");
+      "frame",
+      "frame time by triangles x cells: the hierarchy walk against clusters, 1 thread against all, "
+      "culling on and off");
   frameCommand
       ->add_option("--models", frameBench.modelPaths,
                    "model files to time (default: the demo scene)")

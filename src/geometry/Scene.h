@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,7 +11,7 @@
 #include "geometry/Mesh.h"
 #include "geometry/SceneEdges.h"
 #include "geometry/SceneSource.h"
-#include "geometry/TriangleBvh.h"
+#include "geometry/SceneHierarchy.h"
 #include "geometry/UpAxis.h"
 
 namespace termshade {
@@ -50,9 +49,9 @@ struct Scene {
   /// Per triangle, its 0-based face; empty when triangle t is face t.
   std::vector<uint32_t> triangleFaces;
   SceneClusters clusters;  ///< the triangles in runs, for culling whole runs per frame
-  /// The triangles' hierarchy for the ray stage, when a front end built it
-  /// (BuildTriangleBvh: big scenes drawn many times); null otherwise.
-  std::shared_ptr<const TriangleBvh> bvh;
+  /// The triangles' hierarchy for HierarchyStage, once a front end has
+  /// built and attached it (big scenes drawn many times).
+  SceneHierarchy hierarchy;
   SceneSource source;  ///< the rest of the model (closed parts outward), where the arrays lack it
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex

@@ -286,19 +286,28 @@ std::vector<uint32_t> MortonOrder(const std::vector<BvhNode>& leaves) {
 
 }  // namespace
 
-TriangleBvh BuildTriangleBvh(const Scene& scene) {
+bool TriangleBvh::BuiltFor(const Scene& scene) const {
+  return !nodes.empty() && trianglesData == scene.triangles.data() &&
+         triangleCount == scene.triangles.size();
+}
+
+TriangleBvh BuildTriangleBvh(const Scene& scene, const std::atomic<bool>* cancel) {
   TriangleBvh bvh;
   const auto count = static_cast<uint32_t>(scene.triangles.size());
-  if (count == 0) return bvh;
+  auto cancelled = [cancel] {
+    return cancel != nullptr && cancel->load(std::memory_order_relaxed);
+  };
+  if (count == 0 || cancelled()) return bvh;
   // Step 1: the leaves, runs of triangles in scene order (memory order for the frame).
   constexpr uint32_t kRun = TriangleBvh::kLeafTriangles;
   std::vector<BvhNode> leaves((count + kRun - 1) / kRun);
   RunRangesOnLoadThreads(LoadThreadCount(count), leaves.size(), [&](int, size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
+    for (size_t i = begin; i < end && !cancelled(); ++i) {
       const auto first = static_cast<uint32_t>(i * kRun);
       leaves[i] = MakeLeaf(scene, first, std::min(count, first + kRun));
     }
   });
+  if (cancelled()) return bvh;
   // Step 2: the tree over the leaves in Morton order, halved by count; the
   // top levels' subtrees built in parallel, then the levels above them.
   const std::vector<uint32_t> order = MortonOrder(leaves);
@@ -317,6 +326,9 @@ TriangleBvh BuildTriangleBvh(const Scene& scene) {
     }
   });
   builder.Build(0, leafCount, 0, kTopLevels);
+  if (cancelled()) return {};
+  bvh.trianglesData = scene.triangles.data();
+  bvh.triangleCount = count;
   return bvh;
 }
 

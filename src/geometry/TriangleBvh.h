@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -31,10 +33,21 @@ struct BvhNode {
   static constexpr float kAllDegenerate = 2.0F;
   Vec3 Center() const { return {center[0], center[1], center[2]}; }
   Vec3 Axis(int k) const { return {axes[k][0], axes[k][1], axes[k][2]}; }
-  /// At least the distance from the center to any point of the node.
+  /// At least the distance from the center to any point of the node (loose:
+  /// the half extents summed).
   double Radius() const {
     return (half[0] * Length(Axis(0)) + half[1] * Length(Axis(1)) + half[2] * Length(Axis(2))) *
            (1.0 + 1e-9);
+  }
+  /// The same, tight: the farthest of the box's corners.
+  double CornerRadius() const {
+    double farthest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+      Vec3 p{};
+      for (int k = 0; k < 3; ++k) p = p + Axis(k) * ((corner >> k & 1) != 0 ? half[k] : -half[k]);
+      farthest = std::max(farthest, Length(p));
+    }
+    return farthest * (1.0 + 1e-9);
   }
 };
 
@@ -47,12 +60,18 @@ struct BvhNode {
 struct TriangleBvh {
   static constexpr uint32_t kLeafTriangles = 8;
   std::vector<BvhNode> nodes;
+  /// The triangles it was built over (their array and count).
+  const void* trianglesData = nullptr;
+  size_t triangleCount = 0;
+
   bool Empty() const { return nodes.empty(); }
   size_t Bytes() const { return nodes.size() * sizeof(BvhNode); }
+  bool BuiltFor(const Scene& scene) const;
 };
 
-/// Builds the hierarchy (on the load threads).
-TriangleBvh BuildTriangleBvh(const Scene& scene);
+/// Builds the hierarchy (on the load threads). A set `cancel` stops it early
+/// with an empty hierarchy.
+TriangleBvh BuildTriangleBvh(const Scene& scene, const std::atomic<bool>* cancel = nullptr);
 
 /// Which way a node's faces turn as seen from a point: conservative, so
 /// kAway and kToward hold for every face (FacePlane::FacesPoint, rounding included).

@@ -219,7 +219,7 @@ bool HierarchyStage::Applies(const Scene& scene, const TriangleBvh& bvh,
   // (VertexStage.cpp): twice the near distance in front, half the guard band across.
   const BvhNode& root = bvh.nodes[0];
   const Vec3 c = TransformPoint(frame.eyeFromWorld, root.Center());
-  const double r = root.Radius();
+  const double r = root.CornerRadius();
   const double margin = 1e-9 * (Length(c) + r);
   const double nearZ = 2.0 * -frame.clipPlanes[0].offset;
   const double depthNear = -c.z - r, depthFar = -c.z + r;

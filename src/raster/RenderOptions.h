@@ -30,6 +30,8 @@ SampleGrid PatternSampleGrid(const RenderOptions& options);
 /// (the block modes with two colours; see GlyphStage).
 SampleGrid FrameSampleGrid(const RenderOptions& options);
 
+enum class HierarchyUse { kWhenFaster, kAlways, kNever };
+
 /// Variants of the pipeline kept to measure the product against
 /// (termshade bench); the defaults are the product.
 struct RenderVariant {
@@ -45,9 +47,11 @@ struct RenderVariant {
   /// Whole clusters that face away or cover no sample are skipped (exact).
   bool clusterCulling = true;
   /// One-sample zbuffer and cull frames of a scene with a hierarchy
-  /// (Scene::bvh) walk it (src/raster/HierarchyStage) where that is exact for
-  /// the view; false: cluster by cluster. The same frame either way.
-  bool hierarchy = true;
+  /// (Scene::hierarchy) walk it (src/raster/HierarchyStage) where that is
+  /// exact for the view: kWhenFaster when the scene has many triangles a
+  /// sample, kAlways whatever the count (tests, bench); else cluster by
+  /// cluster. The same frame either way.
+  HierarchyUse hierarchy = HierarchyUse::kWhenFaster;
   /// Several samples a cell on one thread: drawn cell by cell into the glyph
   /// stage's layout (src/raster/SampledRasterizer); false: drawn as a one-sample
   /// frame k x m times the size, then reordered. The same samples either way.

@@ -344,10 +344,13 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   frame.sink = sink;
   // The scanline variant steps rows in float from its first row: one band only.
   const int threads = options.variant.scanline ? 1 : ResolvedThreadCount(options.threads);
-  drewByHierarchy_ =
-      options.variant.hierarchy && scene.bvh && HierarchyStage::Applies(scene, *scene.bvh, frame);
-  if (drewByHierarchy_)
-    return hierarchyStage_.Draw(scene, *scene.bvh, frame, threads, depth, cells);
+  const HierarchyUse use = options.variant.hierarchy;
+  const bool wanted = use == HierarchyUse::kAlways ||
+                      (use == HierarchyUse::kWhenFaster &&
+                       HierarchyStage::Faster(scene, cells.WidthCells(), cells.HeightCells()));
+  const TriangleBvh* const bvh = wanted ? scene.hierarchy.Get(scene) : nullptr;
+  drewByHierarchy_ = bvh != nullptr && HierarchyStage::Applies(scene, *bvh, frame);
+  if (drewByHierarchy_) return hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells);
   return clusterStage_.Draw(scene, frame, threads, depth, cells);
 }
 

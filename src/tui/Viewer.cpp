@@ -12,14 +12,16 @@
 #include <iostream>
 
 #include "geometry/HeapPolicy.h"
+#include "geometry/LevelOfDetail.h"
+#include "geometry/TriangleBvh.h"
 #include "io/LoadError.h"
 #include "raster/DetailPick.h"
 #include "raster/Renderer.h"
-#include "tui/DetailJob.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
 #include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
+#include "tui/SceneJob.h"
 #include "tui/ScreenPainter.h"
 #include "tui/StatusFields.h"
 #include "tui/StatusLine.h"
@@ -75,6 +77,19 @@ std::string HomeDirectory() {
   return home != nullptr ? home : "";
 }
 
+using DetailJob = SceneJob<DetailLevels>;
+using HierarchyJob = SceneJob<TriangleBvh>;
+
+DetailLevels BuildLevels(const Scene& scene, const std::atomic<bool>& cancel) {
+  DetailBuildOptions options;
+  options.cancel = &cancel;
+  return BuildDetailLevels(scene, options);
+}
+
+TriangleBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
+  return BuildTriangleBvh(scene, &cancel);
+}
+
 class EventLoop {
  public:
   EventLoop(ViewerState& state, TerminalSession& session)
@@ -87,6 +102,7 @@ class EventLoop {
       StartRequestedLoad();
       if (dirty_) Draw();
       UpdateDetailJob();
+      UpdateHierarchyJob();
       // Step 1: sleep until input, a signal, a finished load, or the next
       // turntable frame (or a look at the load's progress).
       int timeoutMs = -1;
@@ -97,11 +113,12 @@ class EventLoop {
       }
       if (job_)
         timeoutMs = timeoutMs < 0 ? kLoadProgressPollMs : std::min(timeoutMs, kLoadProgressPollMs);
-      pollfd fds[4] = {{STDIN_FILENO, POLLIN, 0},
+      pollfd fds[5] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
                        {job_ ? job_->ReadyFd() : -1, POLLIN, 0},
-                       {detailJob_ ? detailJob_->ReadyFd() : -1, POLLIN, 0}};
-      poll(fds, 4, timeoutMs);
+                       {detailJob_ ? detailJob_->ReadyFd() : -1, POLLIN, 0},
+                       {hierarchyJob_ ? hierarchyJob_->ReadyFd() : -1, POLLIN, 0}};
+      poll(fds, 5, timeoutMs);
       if (const int signalNumber = HandleSignals(); signalNumber != 0) {
         outcome.signalNumber = signalNumber;
         break;
@@ -113,6 +130,7 @@ class EventLoop {
       if (job_ && job_->Finished()) FinishLoad();
       if (job_ && LoadingText() != shownLoadingText_) dirty_ = true;
       UpdateDetailJob();
+      UpdateHierarchyJob();
       // Step 4: the turntable, at a capped rate.
       if (state_.Turntable() && Clock::now() >= nextTurntableFrame) {
         state_.TurntableStep();
@@ -121,11 +139,13 @@ class EventLoop {
       }
     }
     // A worker still reading a file is asked to stop and left to end alone.
-    outcome.abandonedLoad =
-        abandonedLoad_ || (job_ && job_->Abandoned()) || (detailJob_ && !detailJob_->Finished());
+    outcome.abandonedLoad = abandonedLoad_ || (job_ && job_->Abandoned()) ||
+                            (detailJob_ && !detailJob_->Finished()) ||
+                            (hierarchyJob_ && !hierarchyJob_->Finished());
     if (cancelledStart_) outcome.cancelledStart = cancelledName_;
     job_.reset();
     detailJob_.reset();
+    hierarchyJob_.reset();
     return outcome;
   }
 
@@ -167,8 +187,30 @@ class EventLoop {
       detailJob_.reset();
       dirty_ = true;
     }
-    if (!detailJob_ && !job_ && framesDrawn_ > 0 && state_.WantsLevels()) {
-      detailJob_ = std::make_unique<DetailJob>(state_.SharedScene());
+    if (!detailJob_ && !hierarchyJob_ && !job_ && framesDrawn_ > 0 && state_.WantsLevels()) {
+      detailJob_ = std::make_unique<DetailJob>(state_.SharedScene(), BuildLevels);
+    }
+  }
+
+  // The triangle hierarchy of a big scene (HierarchyStage): built on a worker
+  // once the first frame is up and no other job runs, attached when done
+  // (frames then walk it: the same frames, sooner); tried once per scene.
+  void UpdateHierarchyJob() {
+    const std::shared_ptr<const Scene>& scene = state_.SharedScene();
+    if (hierarchyJob_ && hierarchyJob_->ForScene() != scene) {
+      hierarchyJob_.reset();
+      abandonedLoad_ = true;  // a cancelled build may still be running
+      ReturnFreedMemory();
+    }
+    if (hierarchyJob_ && hierarchyJob_->Finished()) {
+      std::shared_ptr<const TriangleBvh> bvh = hierarchyJob_->Take();
+      hierarchyJob_->ForScene()->hierarchy.Attach(std::move(bvh));
+      hierarchyJob_.reset();
+    }
+    if (!hierarchyJob_ && !detailJob_ && !job_ && framesDrawn_ > 0 && scene &&
+        hierarchyTriedFor_.lock() != scene && scene->triangles.size() >= kHierarchyFromTriangles) {
+      hierarchyTriedFor_ = scene;
+      hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
     }
   }
 
@@ -461,8 +503,10 @@ class EventLoop {
   CellBuffer cells_;
   DepthBuffer depth_;
   LineEditor editor_;
-  std::unique_ptr<LoadJob> job_;          ///< the load running on a worker, if any
-  std::unique_ptr<DetailJob> detailJob_;  ///< levels of detail being built, if any
+  std::unique_ptr<LoadJob> job_;                  ///< the load running on a worker, if any
+  std::unique_ptr<DetailJob> detailJob_;          ///< levels of detail being built, if any
+  std::unique_ptr<HierarchyJob> hierarchyJob_;    ///< the scene's hierarchy being built, if any
+  std::weak_ptr<const Scene> hierarchyTriedFor_;  ///< the scene a hierarchy was last built for
   long framesDrawn_ = 0;
   LoadRequest jobRequest_;
   std::string shownLoadingText_;  ///< what the status line last said of it

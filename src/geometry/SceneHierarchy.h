@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <mutex>
+
+#include "geometry/TriangleBvh.h"
+
+namespace termshade {
+
+struct Scene;
+
+/// Front ends build a scene's hierarchy from this many triangles: the walk
+/// is quicker from about 250 triangles a sample (HierarchyStage::Faster),
+/// which a 1M-triangle scene has up to 4,000 cells (80x50).
+constexpr size_t kHierarchyFromTriangles = 1000000;
+
+/// The triangle hierarchy of a prepared scene, attached once built (on a
+/// worker, for big scenes drawn many times); copies share it. Get checks
+/// that it was built for this scene's triangles.
+class SceneHierarchy {
+ public:
+  /// The hierarchy, or null when none is attached or it is another scene's.
+  const TriangleBvh* Get(const Scene& scene) const;
+  void Attach(std::shared_ptr<const TriangleBvh> bvh) const;
+
+ private:
+  struct State {
+    std::mutex mutex;
+    std::shared_ptr<const TriangleBvh> bvh;
+  };
+  std::shared_ptr<State> state_ = std::make_shared<State>();
+};
+
+}  // namespace termshade
