@@ -100,7 +100,7 @@ int RunFrameBench(const FrameBenchOptions& options) {
   for (size_t k = 0; k <= cases.size() + 1; ++k) std::printf("---|");
   std::printf("\n");
   for (BenchScene& named : scenes) {
-    // Every scene gets its hierarchy here, below kHierarchyFromTriangles too, to show the
+    // Every scene gets its hierarchy here, below HierarchyStage::Faster too, to show the
     // crossover.
     const Clock::time_point buildStart = Clock::now();
     auto bvh = std::make_shared<const TriangleBvh>(BuildTriangleBvh(named.scene));

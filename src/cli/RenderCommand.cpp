@@ -16,6 +16,7 @@
 #include "io/ModelLoader.h"
 #include "io/OutputFile.h"
 #include "raster/DetailPick.h"
+#include "raster/HierarchyStage.h"
 #include "raster/Renderer.h"
 #include "tui/TerminalColours.h"
 
@@ -190,7 +191,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
     // A long turntable of a big scene: the hierarchy pays for its build (same frames).
     if (options.frames >= kHierarchyFromFrames &&
-        scene.triangles.size() >= kHierarchyFromTriangles) {
+        HierarchyStage::FasterFor(scene, widthCells, heightCells, renderOptions)) {
       scene.hierarchy.Attach(std::make_shared<const TriangleBvh>(BuildTriangleBvh(scene)));
     }
     std::optional<DetailLevels> levels;

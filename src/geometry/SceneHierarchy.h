@@ -1,6 +1,5 @@
 #pragma once
 
-#include <cstddef>
 #include <memory>
 #include <mutex>
 
@@ -9,11 +8,6 @@
 namespace termshade {
 
 struct Scene;
-
-/// Front ends build a scene's hierarchy from this many triangles: the walk
-/// is quicker from about 250 triangles a sample (HierarchyStage::Faster),
-/// which a 1M-triangle scene has up to 4,000 cells (80x50).
-constexpr size_t kHierarchyFromTriangles = 1000000;
 
 /// The triangle hierarchy of a prepared scene, attached once built (on a
 /// worker, for big scenes drawn many times); copies share it. Get checks

@@ -10,6 +10,7 @@
 #include "raster/CellBuffer.h"
 #include "raster/ClusterStage.h"
 #include "raster/DepthBuffer.h"
+#include "raster/RenderOptions.h"
 #include "raster/WorkerPool.h"
 
 namespace termshade {
@@ -38,6 +39,14 @@ class HierarchyStage {
   static bool Faster(const Scene& scene, int widthSamples, int heightSamples) {
     return static_cast<double>(scene.triangles.size()) >=
            kFasterFromTrianglesPerSample * widthSamples * heightSamples;
+  }
+  /// The same for a frame of widthCells x heightCells drawn with `options`
+  /// (several samples a cell in the glyph modes): front ends build a scene's
+  /// hierarchy when its frames would walk it.
+  static bool FasterFor(const Scene& scene, int widthCells, int heightCells,
+                        const RenderOptions& options) {
+    const SampleGrid grid = FrameSampleGrid(options);
+    return Faster(scene, widthCells * grid.across, heightCells * grid.down);
   }
 
   /// Draws; returns the triangles rasterized (as ClusterStage counts them).

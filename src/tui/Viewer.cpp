@@ -16,6 +16,7 @@
 #include "geometry/TriangleBvh.h"
 #include "io/LoadError.h"
 #include "raster/DetailPick.h"
+#include "raster/HierarchyStage.h"
 #include "raster/Renderer.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
@@ -192,9 +193,11 @@ class EventLoop {
     }
   }
 
-  // The triangle hierarchy of a big scene (HierarchyStage): built on a worker
-  // once the first frame is up and no other job runs, attached when done
-  // (frames then walk it: the same frames, sooner); tried once per scene.
+  // The triangle hierarchy of a big scene (HierarchyStage) when frames are
+  // exact (with --lod auto a simplified level draws where the walk would pay):
+  // built on a worker once the first frame is up and no other job runs,
+  // attached when done (frames then walk it: the same frames, sooner); tried
+  // once per scene.
   void UpdateHierarchyJob() {
     const std::shared_ptr<const Scene>& scene = state_.SharedScene();
     if (hierarchyJob_ && hierarchyJob_->ForScene() != scene) {
@@ -208,7 +211,9 @@ class EventLoop {
       hierarchyJob_.reset();
     }
     if (!hierarchyJob_ && !detailJob_ && !job_ && framesDrawn_ > 0 && scene &&
-        hierarchyTriedFor_.lock() != scene && scene->triangles.size() >= kHierarchyFromTriangles) {
+        state_.Detail() == DetailMode::kOff && hierarchyTriedFor_.lock() != scene &&
+        HierarchyStage::FasterFor(*scene, cells_.WidthCells(), cells_.HeightCells(),
+                                  frameOptions_)) {
       hierarchyTriedFor_ = scene;
       hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
     }

@@ -280,6 +280,21 @@ run "clear; bash -c 'trap \"\" INT; $bin $work/big.dat; echo status=\$?'"
 wait_for 'loading .*big\.dat' 5 >/dev/null || fail "no loading message for the first model (Ctrl-C)"
 tm send-keys -t v C-c
 wait_for '^status=130' 3 >/dev/null && pass || fail "Ctrl-C during the first load: status not 130 at once"
+# Exact one-sample frames of a big model (--lod off --glyphs ramp): its
+# triangle hierarchy (977k triangles, 500 a sample at 80x24) is built on a
+# worker once the first frame is up, and the frames drawn by walking it are render's (which draws one
+# frame by clusters), before and after a turn.
+run "clear; $bin --lod off --glyphs ramp $work/big.dat"
+wait_for 'big\.dat' $((10 * wait_scale)) >/dev/null || fail "the big model did not open with --lod off"
+settle
+sleep $((1 * wait_scale))
+frame_matches_render big_model_by_hierarchy 24 "$work/big.dat" --size 80x24
+tm send-keys -t v Right Right Up
+wait_for 'theta 0\.50 phi 1\.20' 5 >/dev/null || fail "arrows did not turn the big model"
+frame_matches_render big_model_by_hierarchy_turned 24 "$work/big.dat" --size 80x24 --theta 0.5 --phi 1.2
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
 rm -f "$work/big.dat"
 run "clear; $bin"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start again after the big model"
