@@ -18,6 +18,7 @@
 #include "geometry/TriangleBvh.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
+#include "support/FrameCompare.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -161,48 +162,11 @@ TEST(SceneHierarchy, ServesOnlyItsOwnScene) {
   EXPECT_TRUE(BuildTriangleBvh(sphere, &cancel).Empty());
 }
 
-struct Drawn {
-  CellBuffer cells;
-  DepthBuffer depth;
-  RenderStats stats;
-};
-
-struct View {
-  double theta, phi, rhoScale;  // rhoScale < 1: the eye close to or inside the model
-};
-
-Drawn Draw(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
-           const RenderOptions& options) {
-  ViewParams params = DefaultView(scene.diagonalModelUnits);
-  params.theta = view.theta;
-  params.phi = view.phi;
-  params.rho *= view.rhoScale;
-  const Camera camera = FitCamera(scene, params, width, height, 2.0);
-  Drawn drawn;
-  drawn.cells.Resize(width, height);
-  drawn.depth.Resize(width, height);
-  drawn.stats = renderer.Render(scene, camera, options, drawn.depth, drawn.cells);
-  return drawn;
-}
-
-void ExpectSame(const Drawn& expected, const Drawn& actual, const std::string& what) {
-  ASSERT_EQ(expected.cells.FaceNumbers(), actual.cells.FaceNumbers()) << what;
-  ASSERT_EQ(expected.cells.Glyphs(), actual.cells.Glyphs()) << what;
-  const size_t count = expected.cells.FaceNumbers().size();
-  for (size_t i = 0; i < count; ++i) {
-    ASSERT_EQ(std::bit_cast<uint32_t>(expected.depth.At(i)),
-              std::bit_cast<uint32_t>(actual.depth.At(i)))
-        << what << ": depth of cell " << i;
-  }
-  EXPECT_EQ(expected.stats.trianglesDrawn, actual.stats.trianglesDrawn) << what;
-  EXPECT_EQ(expected.stats.facesVisible, actual.stats.facesVisible) << what;
-}
-
-const std::vector<View> kViews{{0.3, 1.3, 1.0},  {2.1, 0.4, 1.0},  {4.0, 2.6, 2.5},
-                               {1.0, 1.5, 0.35}, {5.5, 1.0, 0.12}, {3.0, 0.05, 0.6}};
+const std::vector<test::OrbitView> kViews{{0.3, 1.3, 1.0},  {2.1, 0.4, 1.0},  {4.0, 2.6, 2.5},
+                                          {1.0, 1.5, 0.35}, {5.5, 1.0, 0.12}, {3.0, 0.05, 0.6}};
 
 // Returns how many frames the walk drew.
-int ExpectHierarchyFramesMatch(const std::string& name, Scene scene,
+int ExpectHierarchyFramesMatch(const std::string& name, const Scene& scene,
                                const std::vector<int>& sizes) {
   scene.hierarchy.Attach(Hierarchy(scene));
   int walked = 0;
@@ -210,13 +174,14 @@ int ExpectHierarchyFramesMatch(const std::string& name, Scene scene,
     const int width = sizes[s], height = sizes[s + 1];
     for (const Method method : {Method::kZBuffer, Method::kCull}) {
       for (const bool keepDepth : {true, false}) {
-        for (const View& view : kViews) {
+        for (const test::OrbitView& view : kViews) {
           RenderOptions reference;
           reference.method = method;
           reference.keepDepth = keepDepth;
           reference.variant.clusters = false;  // the plain face loop
           Renderer plain;
-          const Drawn expected = Draw(plain, scene, view, width, height, reference);
+          const test::DrawnFrame expected =
+              test::DrawOrbit(plain, scene, view, width, height, reference);
           for (const int threads : {1, 2, 3}) {
             RenderOptions options = reference;
             options.variant.clusters = true;
@@ -230,8 +195,9 @@ int ExpectHierarchyFramesMatch(const std::string& name, Scene scene,
                 " rho x" + std::to_string(view.rhoScale) + " threads " + std::to_string(threads) +
                 (keepDepth ? " depth" : "");
             for (int repeat = 0; repeat < 2; ++repeat) {  // the second reuses its buffers
-              const Drawn actual = Draw(renderer, scene, view, width, height, options);
-              ExpectSame(expected, actual, what);
+              const test::DrawnFrame actual =
+                  test::DrawOrbit(renderer, scene, view, width, height, options);
+              test::ExpectSameFrame(expected, actual, what);
               walked += actual.stats.byHierarchy ? 1 : 0;
             }
           }

@@ -13,51 +13,14 @@
 #include "geometry/ViewingTransform.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
+#include "support/FrameCompare.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
 namespace {
 
-struct Drawn {
-  CellBuffer cells;
-  DepthBuffer depth;
-  RenderStats stats;
-};
-
-struct View {
-  double theta, phi, rhoScale;  // rhoScale < 1: the eye close to or inside the model
-};
-
-const std::vector<View> kViews{
+const std::vector<test::OrbitView> kViews{
     {0.3, 1.3, 1.0}, {2.1, 0.4, 1.0}, {4.0, 2.6, 1.0}, {1.0, 1.5, 0.35}, {5.5, 1.0, 0.12}};
-
-Drawn Draw(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
-           const RenderOptions& options) {
-  ViewParams params = DefaultView(scene.diagonalModelUnits);
-  params.theta = view.theta;
-  params.phi = view.phi;
-  params.rho *= view.rhoScale;
-  const Camera camera = FitCamera(scene, params, width, height, 2.0);
-  Drawn drawn;
-  drawn.cells.Resize(width, height);
-  drawn.depth.Resize(width, height);
-  drawn.stats = renderer.Render(scene, camera, options, drawn.depth, drawn.cells);
-  return drawn;
-}
-
-// Bit for bit: face numbers, glyphs and the depth buffer's floats, and the counts.
-void ExpectSame(const Drawn& expected, const Drawn& actual, const std::string& what) {
-  ASSERT_EQ(expected.cells.FaceNumbers(), actual.cells.FaceNumbers()) << what;
-  ASSERT_EQ(expected.cells.Glyphs(), actual.cells.Glyphs()) << what;
-  const size_t count = expected.cells.FaceNumbers().size();
-  for (size_t i = 0; i < count; ++i) {
-    ASSERT_EQ(std::bit_cast<uint32_t>(expected.depth.At(i)),
-              std::bit_cast<uint32_t>(actual.depth.At(i)))
-        << what << ": depth of cell " << i;
-  }
-  EXPECT_EQ(expected.stats.trianglesDrawn, actual.stats.trianglesDrawn) << what;
-  EXPECT_EQ(expected.stats.facesVisible, actual.stats.facesVisible) << what;
-}
 
 struct NamedScene {
   std::string name;
@@ -103,10 +66,10 @@ void ExpectEveryThreadCountMatches(const NamedScene& named, const std::vector<in
   for (size_t s = 0; s + 1 < sizes.size(); s += 2) {
     const int width = sizes[s], height = sizes[s + 1];
     for (const Method method : {Method::kZBuffer, Method::kCull}) {
-      for (const View& view : kViews) {
+      for (const test::OrbitView& view : kViews) {
         Renderer reference;
-        const Drawn expected =
-            Draw(reference, named.scene, view, width, height, Options(method, 1, false, false));
+        const test::DrawnFrame expected = test::DrawOrbit(reference, named.scene, view, width,
+                                                          height, Options(method, 1, false, false));
         for (const int threads : {1, 2, 3, 7}) {
           for (const bool culling : {true, false}) {
             Renderer renderer;
@@ -116,10 +79,10 @@ void ExpectEveryThreadCountMatches(const NamedScene& named, const std::vector<in
                 " threads " + std::to_string(threads) + (culling ? " culled" : " all");
             // Twice with the same renderer: the second frame reuses its bins and threads.
             for (int repeat = 0; repeat < 2; ++repeat) {
-              ExpectSame(expected,
-                         Draw(renderer, named.scene, view, width, height,
-                              Options(method, threads, true, culling)),
-                         what);
+              test::ExpectSameFrame(expected,
+                                    test::DrawOrbit(renderer, named.scene, view, width, height,
+                                                    Options(method, threads, true, culling)),
+                                    what);
             }
           }
         }
@@ -142,12 +105,13 @@ TEST(ThreadedFrame, Sphere200kMatchesTheSingleThreadFaceLoop) {
 TEST(ThreadedFrame, DefaultThresholdStillMatches) {
   // The product's options: every core, one thread below the threshold.
   const Scene sphere = PrepareScene(GenerateTriangleSphere(50000));
-  for (const View& view : kViews) {
+  for (const test::OrbitView& view : kViews) {
     Renderer reference, renderer;
     RenderOptions plain;
     plain.variant.clusters = false;
-    ExpectSame(Draw(reference, sphere, view, 120, 40, plain),
-               Draw(renderer, sphere, view, 120, 40, RenderOptions{}), "default options");
+    test::ExpectSameFrame(test::DrawOrbit(reference, sphere, view, 120, 40, plain),
+                          test::DrawOrbit(renderer, sphere, view, 120, 40, RenderOptions{}),
+                          "default options");
   }
 }
 
@@ -165,10 +129,10 @@ TEST(ThreadedFrame, SupersampledAndVariantsMatch) {
     RenderOptions threaded = Options(Method::kZBuffer, 3, true, true);
     change(plain);
     change(threaded);
-    for (const View& view : kViews) {
+    for (const test::OrbitView& view : kViews) {
       Renderer reference, renderer;
-      const Drawn expected = Draw(reference, scene, view, 80, 24, plain);
-      const Drawn actual = Draw(renderer, scene, view, 80, 24, threaded);
+      const test::DrawnFrame expected = test::DrawOrbit(reference, scene, view, 80, 24, plain);
+      const test::DrawnFrame actual = test::DrawOrbit(renderer, scene, view, 80, 24, threaded);
       ASSERT_EQ(expected.cells.FaceNumbers(), actual.cells.FaceNumbers());
       ASSERT_EQ(expected.cells.Glyphs(), actual.cells.Glyphs());
     }
@@ -180,7 +144,7 @@ TEST(ThreadedFrame, SupersampledAndVariantsMatch) {
 TEST(Clusters, ConeTestIsConservativeAndSkipsTheBackHalf) {
   const Scene sphere = PrepareScene(GenerateTriangleSphere(200000));
   ASSERT_FALSE(sphere.clusters.clusters.empty());
-  for (const View& view : kViews) {
+  for (const test::OrbitView& view : kViews) {
     ViewParams params = DefaultView(sphere.diagonalModelUnits);
     params.theta = view.theta;
     params.phi = view.phi;

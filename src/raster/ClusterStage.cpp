@@ -14,13 +14,6 @@
 namespace termshade {
 namespace {
 
-// Sample columns (or rows) whose centers k + 0.5 lie in [low, high], clipped to [0, limit).
-bool HoldsSample(double low, double high, int limit) {
-  const double first = std::max(0.0, std::ceil(low - 0.5));
-  const double last = std::min(limit - 1.0, std::floor(high - 0.5));
-  return first <= last;
-}
-
 // False when no vertex of the cluster can give a triangle a sample to
 // cover: its bounding sphere lies wholly outside one clip plane (every
 // triangle then has a shared out-code bit), or lies where every vertex is
@@ -56,10 +49,10 @@ bool SphereMayCover(const SceneCluster& cluster, const ClusterFrame& frame, int 
     return true;
   }
   constexpr double kScreenMargin = 0.01;
-  return HoldsSample(proj.cx + proj.d * xLow - kScreenMargin,
-                     proj.cx + proj.d * xHigh + kScreenMargin, width) &&
-         HoldsSample(proj.cy - vScale * yHigh - kScreenMargin,
-                     proj.cy - vScale * yLow + kScreenMargin, height);
+  return RangeHoldsSample(proj.cx + proj.d * xLow - kScreenMargin,
+                          proj.cx + proj.d * xHigh + kScreenMargin, width) &&
+         RangeHoldsSample(proj.cy - vScale * yHigh - kScreenMargin,
+                          proj.cy - vScale * yLow + kScreenMargin, height);
 }
 
 bool ClusterMayShow(const SceneCluster& cluster, const ClusterFrame& frame, int width, int height,

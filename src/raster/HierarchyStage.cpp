@@ -10,12 +10,11 @@
 namespace termshade {
 namespace {
 
-// Sample columns (or rows) whose centers k + 0.5 lie in [low, high], clipped to [0, limit).
-bool HoldsSample(double low, double high, int limit) {
-  const double first = std::max(0.0, std::ceil(low - 0.5));
-  const double last = std::min(limit - 1.0, std::floor(high - 0.5));
-  return first <= last;
-}
+// A node's box in eye space: its center, and its axes times their half extents.
+struct EyeBox {
+  double center[3];
+  double axes[3][3];  ///< [axis][eye coordinate]
+};
 
 // The per-frame constants of the walk.
 struct Walk {
@@ -24,22 +23,31 @@ struct Walk {
   const ClusterFrame& frame;
   int width, height;
 
+  EyeBox InEye(const BvhNode& node) const {
+    const auto& m = frame.eyeFromWorld.m;
+    const Vec3 center = node.Center();
+    EyeBox box{};
+    for (size_t r = 0; r < 3; ++r) {
+      const Vec3 row{m[r * 4], m[r * 4 + 1], m[r * 4 + 2]};
+      box.center[r] = row.x * center.x + row.y * center.y + row.z * center.z + m[r * 4 + 3];
+      for (int k = 0; k < 3; ++k) box.axes[k][r] = Dot(row, node.Axis(k)) * node.half[k];
+    }
+    return box;
+  }
+
   // False when no triangle of the node can cover a sample: its oriented box,
   // bounded by an eye-space box, projects (0.01 cell margin: more than the
   // snapping's 1/512) onto no cell-center sample.
   bool MayCover(const BvhNode& node) const {
+    const EyeBox box = InEye(node);
     const auto& m = frame.eyeFromWorld.m;
-    const Vec3 center = node.Center();
-    double c[3], e[3];
-    for (int r = 0; r < 3; ++r) {
-      const Vec3 row{m[r * 4], m[r * 4 + 1], m[r * 4 + 2]};
-      c[r] = m[r * 4] * center.x + m[r * 4 + 1] * center.y + m[r * 4 + 2] * center.z + m[r * 4 + 3];
-      e[r] = (std::fabs(Dot(row, node.Axis(0))) * node.half[0] +
-              std::fabs(Dot(row, node.Axis(1))) * node.half[1] +
-              std::fabs(Dot(row, node.Axis(2))) * node.half[2]) *
+    double e[3];
+    for (size_t r = 0; r < 3; ++r) {
+      e[r] = (std::fabs(box.axes[0][r]) + std::fabs(box.axes[1][r]) + std::fabs(box.axes[2][r])) *
                  (1.0 + 1e-9) +
-             1e-9 * (std::fabs(c[r]) + std::fabs(m[r * 4 + 3]));
+             1e-9 * (std::fabs(box.center[r]) + std::fabs(m[r * 4 + 3]));
     }
+    const double* const c = box.center;
     const double depthNear = -c[2] - e[2], depthFar = -c[2] + e[2];
     if (!(depthNear > 0.0)) return true;  // the eye box reaches the eye: look inside
     // Reciprocals widened past their rounding (and the products' below).
@@ -55,23 +63,18 @@ struct Walk {
     const Projection& proj = frame.projection;
     const double vScale = proj.d / proj.cellAspect;
     constexpr double kScreenMargin = 0.01;
-    return HoldsSample(proj.cx + proj.d * xLow - kScreenMargin,
-                       proj.cx + proj.d * xHigh + kScreenMargin, width) &&
-           HoldsSample(proj.cy - vScale * yHigh - kScreenMargin,
-                       proj.cy - vScale * yLow + kScreenMargin, height);
+    return RangeHoldsSample(proj.cx + proj.d * xLow - kScreenMargin,
+                            proj.cx + proj.d * xHigh + kScreenMargin, width) &&
+           RangeHoldsSample(proj.cy - vScale * yHigh - kScreenMargin,
+                            proj.cy - vScale * yLow + kScreenMargin, height);
   }
 
   // MayCover, tighter and dearer: the box's eight corners projected one by
   // one (a box wholly in front projects into the hull of its corners).
   bool MayCoverByCorners(const BvhNode& node) const {
-    const auto& m = frame.eyeFromWorld.m;
-    const Vec3 center = node.Center();
-    double c[3], a[3][3];
-    for (int r = 0; r < 3; ++r) {
-      const Vec3 row{m[r * 4], m[r * 4 + 1], m[r * 4 + 2]};
-      c[r] = m[r * 4] * center.x + m[r * 4 + 1] * center.y + m[r * 4 + 2] * center.z + m[r * 4 + 3];
-      for (int k = 0; k < 3; ++k) a[k][r] = Dot(row, node.Axis(k)) * node.half[k];
-    }
+    const EyeBox box = InEye(node);
+    const double* const c = box.center;
+    const auto& a = box.axes;
     const Projection& proj = frame.projection;
     const double vScale = proj.d / proj.cellAspect;
     double uLow = INFINITY, uHigh = -INFINITY, vLow = INFINITY, vHigh = -INFINITY;
@@ -91,8 +94,10 @@ struct Walk {
     }
     // 0.01 cell: the snapping's 1/512 and this arithmetic's rounding (within the guard band).
     constexpr double kScreenMargin = 0.01;
-    return HoldsSample(proj.cx + uLow - kScreenMargin, proj.cx + uHigh + kScreenMargin, width) &&
-           HoldsSample(proj.cy + vLow - kScreenMargin, proj.cy + vHigh + kScreenMargin, height);
+    return RangeHoldsSample(proj.cx + uLow - kScreenMargin, proj.cx + uHigh + kScreenMargin,
+                            width) &&
+           RangeHoldsSample(proj.cy + vLow - kScreenMargin, proj.cy + vHigh + kScreenMargin,
+                            height);
   }
 
   // A leaf's front-facing triangles (from scene triangle `first`) whose

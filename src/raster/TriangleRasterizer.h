@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "raster/CellBuffer.h"
@@ -29,6 +30,14 @@ inline bool MayCoverSample(const RasterVertex& a, const RasterVertex& b, const R
   const int32_t firstRow = std::max(0, (minY + 127) >> 8);
   const int32_t lastRow = std::min(heightCells - 1, (maxY - 128) >> 8);
   return firstRow <= lastRow;
+}
+
+/// True when some cell-center sample k + 0.5 (k in [0, limit)) lies in
+/// [low, high] (cells, in x or y): the bounds tests of whole groups of triangles.
+inline bool RangeHoldsSample(double low, double high, int limit) {
+  const double first = std::max(0.0, std::ceil(low - 0.5));
+  const double last = std::min(limit - 1.0, std::floor(high - 0.5));
+  return first <= last;
 }
 
 /// How depth is interpolated and stored. The product uses kFloatInverseZ; the
