@@ -221,6 +221,19 @@ TEST(HierarchyStage, SmallScenesMatchTheFaceLoop) {
                                  {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
                              })),
                              {80, 24});
+  for (const double scale : {1e-9, 1e9}) {  // tiny and huge coordinates
+    Mesh sphere = GenerateTriangleSphere(5000);
+    for (Vec3& p : sphere.verticesFile) p = p * scale;
+    ExpectHierarchyFramesMatch("sphere x" + std::to_string(scale), PrepareScene(sphere), {80, 24});
+  }
+  // A floor far larger than the view, reaching behind the eye (clipped: no walk), and a quad on it.
+  ExpectHierarchyFramesMatch(
+      "floor through the eye plane",
+      PrepareScene(test::QuadMesh({
+          {{{-100, -100, -0.5}, {100, -100, -0.5}, {100, 100, -0.5}, {-100, 100, -0.5}}},
+          {{{0, -0.5, -0.5}, {0, 0.5, -0.5}, {0, 0.5, 0.5}, {0, -0.5, 0.5}}},
+      })),
+      {80, 24});
   Mesh nan = test::QuadMesh({quad});
   nan.verticesFile.push_back({NAN, 0, 0});
   nan.AddFace(std::array<uint32_t, 3>{0, 1, 4});

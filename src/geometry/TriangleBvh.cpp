@@ -288,7 +288,8 @@ std::vector<uint32_t> MortonOrder(const std::vector<BvhNode>& leaves) {
 
 bool TriangleBvh::BuiltFor(const Scene& scene) const {
   return !nodes.empty() && trianglesData == scene.triangles.data() &&
-         triangleCount == scene.triangles.size();
+         triangleCount == scene.triangles.size() && verticesData == scene.verticesWorld.data() &&
+         vertexCount == scene.verticesWorld.size();
 }
 
 TriangleBvh BuildTriangleBvh(const Scene& scene, const std::atomic<bool>* cancel) {
@@ -329,6 +330,8 @@ TriangleBvh BuildTriangleBvh(const Scene& scene, const std::atomic<bool>* cancel
   if (cancelled()) return {};
   bvh.trianglesData = scene.triangles.data();
   bvh.triangleCount = count;
+  bvh.verticesData = scene.verticesWorld.data();
+  bvh.vertexCount = scene.verticesWorld.size();
   return bvh;
 }
 

@@ -60,9 +60,11 @@ struct BvhNode {
 struct TriangleBvh {
   static constexpr uint32_t kLeafTriangles = 8;
   std::vector<BvhNode> nodes;
-  /// The triangles it was built over (their array and count).
+  /// The triangles and vertices it was built over (their arrays and counts).
   const void* trianglesData = nullptr;
   size_t triangleCount = 0;
+  const void* verticesData = nullptr;
+  size_t vertexCount = 0;
 
   bool Empty() const { return nodes.empty(); }
   size_t Bytes() const { return nodes.size() * sizeof(BvhNode); }
