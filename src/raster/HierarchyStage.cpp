@@ -169,8 +169,8 @@ struct Walk {
     }
   }
 
-  static constexpr uint32_t kAllFront =
-      1U << 31;  ///< on a node entry: the cone showed every face front
+  /// On a node or leaf entry (indices below 2^31): the cone showed every face front.
+  static constexpr uint32_t kAllFront = 1U << 31;
 
   // The leaves of the subtree at entry `root` (a node index, kAllFront when
   // known) that may hold a front-facing triangle covering a sample, appended
@@ -219,7 +219,7 @@ bool HierarchyStage::Applies(const Scene& scene, const TriangleBvh& bvh,
       frame.depthEncoding.format != DepthFormat::kFloatInverseZ) {
     return false;
   }
-  (void)scene;
+  if (scene.triangles.size() >= size_t{1} << 31) return false;  // entries keep a flag in bit 31
   // Every corner within the root box's sphere takes the direct path
   // (VertexStage.cpp): twice the near distance in front, half the guard band across.
   const BvhNode& root = bvh.nodes[0];
@@ -227,7 +227,7 @@ bool HierarchyStage::Applies(const Scene& scene, const TriangleBvh& bvh,
   const double r = root.CornerRadius();
   const double margin = 1e-9 * (Length(c) + r);
   const double nearZ = 2.0 * -frame.clipPlanes[0].offset;
-  const double depthNear = -c.z - r, depthFar = -c.z + r;
+  const double depthNear = -c.z - r;
   if (!(depthNear > nearZ * (1.0 + 1e-9) + margin)) return false;
   auto reach = [&](double center) {
     return std::max(std::fabs(center - r), std::fabs(center + r)) / depthNear;
@@ -235,7 +235,6 @@ bool HierarchyStage::Applies(const Scene& scene, const TriangleBvh& bvh,
   const Projection& proj = frame.projection;
   const double xLimit = 0.5 * (kClipRangeCells - proj.cx) * (1.0 - 1e-9);
   const double yLimit = 0.5 * (kClipRangeCells - proj.cy) * (1.0 - 1e-9);
-  (void)depthFar;
   return reach(c.x) * proj.d < xLimit && reach(c.y) * (proj.d / proj.cellAspect) < yLimit;
 }
 
