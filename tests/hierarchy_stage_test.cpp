@@ -108,8 +108,38 @@ TEST(TriangleBvh, EveryCornerAndNormalLiesInsideItsNodes) {
   ExpectBoundsHold(PrepareScene(huge), "huge quad");
 }
 
+// Walks the tree from `eye`, a verdict holding for its whole subtree, and
+// checks kAway and kToward against every face; counts the verdicts.
+void ExpectVerdictsHold(const Scene& scene, const TriangleBvh& bvh, Vec3 eye, int& away,
+                        int& toward) {
+  std::vector<std::pair<uint32_t, ClusterFacing>> stack{{0, ClusterFacing::kMixed}};
+  while (!stack.empty()) {
+    auto [index, above] = stack.back();
+    stack.pop_back();
+    const BvhNode& node = bvh.nodes[index];
+    const ClusterFacing facing = above != ClusterFacing::kMixed ? above : NodeFacing(node, eye);
+    away += facing == ClusterFacing::kAway;
+    toward += facing == ClusterFacing::kToward;
+    if (node.count == 0) {
+      stack.push_back({node.first, facing});
+      stack.push_back({index + 1, facing});
+      continue;
+    }
+    for (uint32_t t = node.first; t < node.first + node.count; ++t) {
+      const bool front = scene.facePlanesWorld[scene.TriangleFace(t)].FacesPoint(eye);
+      if (facing == ClusterFacing::kAway) {
+        ASSERT_FALSE(front) << "triangle " << t << " node " << index;
+      }
+      if (facing == ClusterFacing::kToward) {
+        ASSERT_TRUE(front) << "triangle " << t << " node " << index;
+      }
+    }
+  }
+}
+
 // kAway and kToward hold for every face below the node, from eyes all around
-// and close to the model.
+// and close to the model, and from eyes on and just off nodes' cone axes
+// (where |v|^2 - along^2 would cancel).
 TEST(TriangleBvh, FacingVerdictsHoldForEveryFace) {
   const Scene scene = PrepareScene(GenerateTriangleSphere(5000));
   const TriangleBvh bvh = BuildTriangleBvh(scene);
@@ -117,34 +147,65 @@ TEST(TriangleBvh, FacingVerdictsHoldForEveryFace) {
   std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
   int away = 0, toward = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    const Vec3 eye{coordinate(random), coordinate(random), coordinate(random)};
-    std::vector<std::pair<uint32_t, ClusterFacing>> stack{{0, ClusterFacing::kMixed}};
-    while (!stack.empty()) {
-      auto [index, above] = stack.back();
-      stack.pop_back();
-      const BvhNode& node = bvh.nodes[index];
-      ClusterFacing facing = NodeFacing(node, eye);
-      if (above != ClusterFacing::kMixed) facing = above;  // a verdict holds for the whole subtree
-      away += facing == ClusterFacing::kAway;
-      toward += facing == ClusterFacing::kToward;
-      if (node.count == 0) {
-        stack.push_back({node.first, facing});
-        stack.push_back({index + 1, facing});
-        continue;
-      }
-      for (uint32_t t = node.first; t < node.first + node.count; ++t) {
-        const bool front = scene.facePlanesWorld[scene.TriangleFace(t)].FacesPoint(eye);
-        if (facing == ClusterFacing::kAway) {
-          ASSERT_FALSE(front) << "triangle " << t;
-        }
-        if (facing == ClusterFacing::kToward) {
-          ASSERT_TRUE(front) << "triangle " << t;
-        }
+    ExpectVerdictsHold(scene, bvh, {coordinate(random), coordinate(random), coordinate(random)},
+                       away, toward);
+  }
+  int onAxis = 0;
+  for (size_t index = 0; index < bvh.nodes.size() && onAxis < 60; index += 37) {
+    const BvhNode& node = bvh.nodes[index];
+    if (!(node.coneCos > 0.0F) || node.coneCos == BvhNode::kAllDegenerate) continue;
+    ++onAxis;
+    const Vec3 axis = node.Axis(2) * (1.0 / Length(node.Axis(2)));
+    const Vec3 side =
+        Normalized(Cross(axis, std::fabs(axis.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
+    for (const double distance : {0.01, 0.5, 3.0, 40.0}) {
+      for (const double off : {0.0, 1e-8, 3e-4, 1e-2}) {
+        const Vec3 eye = node.Center() + (axis + side * off) * distance;
+        int nodeAway = 0, nodeToward = 0;
+        ExpectVerdictsHold(scene, bvh, eye, nodeAway, nodeToward);
+        toward += nodeToward;
       }
     }
   }
   EXPECT_GT(away, 0);  // the verdicts are not all "mixed"
   EXPECT_GT(toward, 0);
+  EXPECT_GT(onAxis, 10);
+}
+
+// A hand-made node whose stored float axis is furthest from unit length, the
+// eye about sqrt(2 |axis| - 2) from the axis, a face at the cone's edge on
+// the far side just back-facing: no kToward (a review's case; with
+// sqrt(|v|^2 - along^2) and the float axis as unit it was kToward).
+TEST(TriangleBvh, FacingNearTheAxisOfAFloatConeIsNotTowardABackFace) {
+  std::mt19937 random(1);
+  std::normal_distribution<double> gauss;
+  Vec3 stored{}, unit{};
+  double delta = -1.0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 v = Normalized(Vec3{gauss(random), gauss(random), gauss(random)});
+    const Vec3 f{static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+    if (Length(f) - 1.0 > delta) {
+      delta = Length(f) - 1.0;
+      stored = f;
+    }
+  }
+  unit = stored * (1.0 / Length(stored));
+  const Vec3 u = Normalized(Cross(unit, std::fabs(unit.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
+  BvhNode node{};
+  for (int k = 0; k < 3; ++k) node.half[k] = 0.001F;
+  node.axes[2][0] = static_cast<float>(stored.x);
+  node.axes[2][1] = static_cast<float>(stored.y);
+  node.axes[2][2] = static_cast<float>(stored.z);
+  node.coneCos = 0.5F;
+  const double cone = std::acos(0.5);
+  const double phi = std::sqrt(2.0 * delta);
+  const Vec3 eye = (unit * std::cos(phi) + u * std::sin(phi)) * 10.0;
+  const Vec3 normal = unit * std::cos(cone - 1e-7) - u * std::sin(cone - 1e-7);
+  const FacePlane face{normal, Dot(normal, eye) + 0.002};  // eye 0.002 behind it
+  node.heightMin = static_cast<float>(-face.offset);
+  node.heightMax = node.heightMin;
+  ASSERT_FALSE(face.FacesPoint(eye));
+  EXPECT_NE(NodeFacing(node, eye), ClusterFacing::kToward) << "axis off unit by " << delta;
 }
 
 // A hierarchy serves only the triangles it was built over; copies of a scene share it.

@@ -190,8 +190,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     }
     const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
     // A long turntable of a big scene: the hierarchy pays for its build (same frames).
-    if (options.frames >= kHierarchyFromFrames &&
-        HierarchyStage::FasterFor(scene, widthCells, heightCells, renderOptions)) {
+    if (options.frames >= kHierarchyFromFrames && *detail == DetailMode::kOff &&
+        HierarchyStage::WouldWalk(scene, widthCells, heightCells, renderOptions)) {
       scene.hierarchy.Attach(std::make_shared<const TriangleBvh>(BuildTriangleBvh(scene)));
     }
     std::optional<DetailLevels> levels;

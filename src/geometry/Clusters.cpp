@@ -106,7 +106,7 @@ ClusterFacing FacingOf(const SceneCluster& cluster, Vec3 eyeWorld) {
   const Vec3 v = eyeWorld - cluster.centerWorld;
   const double length = Length(v);
   const double along = Dot(cluster.coneAxis, v);
-  const double across = std::sqrt(std::max(0.0, length * length - along * along));
+  const double across = Length(Cross(cluster.coneAxis, v));  // no cancellation near the axis
   const double sinT = std::sqrt(std::max(0.0, 1.0 - cluster.coneCos * cluster.coneCos));
   // Margin for the rounding of these bounds and of FacesPoint itself.
   const double margin =

@@ -4,10 +4,10 @@
 
 namespace termshade {
 
-const TriangleBvh* SceneHierarchy::Get(const Scene& scene) const {
+std::shared_ptr<const TriangleBvh> SceneHierarchy::Get(const Scene& scene) const {
   const std::lock_guard<std::mutex> lock(state_->mutex);
-  const TriangleBvh* bvh = state_->bvh.get();
-  return bvh != nullptr && bvh->BuiltFor(scene) ? bvh : nullptr;
+  if (state_->bvh == nullptr || !state_->bvh->BuiltFor(scene)) return nullptr;
+  return state_->bvh;
 }
 
 void SceneHierarchy::Attach(std::shared_ptr<const TriangleBvh> bvh) const {

@@ -14,8 +14,9 @@ struct Scene;
 /// that it was built for this scene's triangles.
 class SceneHierarchy {
  public:
-  /// The hierarchy, or null when none is attached or it is another scene's.
-  const TriangleBvh* Get(const Scene& scene) const;
+  /// The hierarchy, or null when none is attached or it is another scene's
+  /// (shared: a later Attach does not free it under a frame that walks it).
+  std::shared_ptr<const TriangleBvh> Get(const Scene& scene) const;
   void Attach(std::shared_ptr<const TriangleBvh> bvh) const;
 
  private:

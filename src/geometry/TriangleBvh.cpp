@@ -342,12 +342,14 @@ ClusterFacing NodeFacing(const BvhNode& node, Vec3 eyeWorld) {
   const Vec3 center = node.Center();
   const Vec3 v = eyeWorld - center;
   const double length = Length(v);
-  const Vec3 axis = node.Axis(2);
+  // The unit axis coneCos was measured against; |axis x v| does not cancel
+  // when the eye lies near the axis, as sqrt(|v|^2 - along^2) would.
+  const Vec3 axis = StoredAxis(node);
   const double coneCos = node.coneCos;
   const double along = Dot(axis, v);
-  const double across = std::sqrt(std::max(0.0, length * length - along * along));
+  const double across = Length(Cross(axis, v));
   const double sinT = std::sqrt(std::max(0.0, 1.0 - coneCos * coneCos));
-  // Margin: the stored axis is unit to about 1e-7; rounding of these bounds and of FacesPoint.
+  // Margin: rounding of these bounds and of FacesPoint.
   const double margin = 1e-6 * (length + node.Radius() + std::fabs(node.heightMax) +
                                 (std::isfinite(node.heightMin) ? std::fabs(node.heightMin) : 0.0)) +
                         1e-9 * (Length(eyeWorld) + Length(center));

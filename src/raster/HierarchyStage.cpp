@@ -238,6 +238,23 @@ bool HierarchyStage::Applies(const Scene& scene, const TriangleBvh& bvh,
   return reach(c.x) * proj.d < xLimit && reach(c.y) * (proj.d / proj.cellAspect) < yLimit;
 }
 
+bool HierarchyStage::WouldWalk(const Scene& scene, int widthCells, int heightCells,
+                               const RenderOptions& options) {
+  const Method method = options.method;
+  const RenderVariant& variant = options.variant;
+  if ((method != Method::kZBuffer && method != Method::kCull && method != Method::kAuto) ||
+      !options.cullBackFaces || !variant.clusters || !variant.clusterCulling ||
+      variant.floatGeometry || variant.scanline ||
+      variant.depthFormat != DepthFormat::kFloatInverseZ ||
+      variant.hierarchy == HierarchyUse::kNever) {
+    return false;
+  }
+  const SampleGrid grid = FrameSampleGrid(options);
+  // Several samples a cell on one thread go to the sampled rasterizer, which does not walk.
+  if (grid.Count() > 1 && ResolvedThreadCount(options.threads) <= 1) return false;
+  return Faster(scene, widthCells * grid.across, heightCells * grid.down);
+}
+
 int HierarchyStage::Draw(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame,
                          int threads, DepthBuffer& depth, CellBuffer& cells) {
   const Walk walk{scene, bvh, frame, cells.WidthCells(), cells.HeightCells()};

@@ -40,14 +40,14 @@ class HierarchyStage {
     return static_cast<double>(scene.triangles.size()) >=
            kFasterFromTrianglesPerSample * widthSamples * heightSamples;
   }
-  /// The same for a frame of widthCells x heightCells drawn with `options`
-  /// (several samples a cell in the glyph modes): front ends build a scene's
-  /// hierarchy when its frames would walk it.
-  static bool FasterFor(const Scene& scene, int widthCells, int heightCells,
-                        const RenderOptions& options) {
-    const SampleGrid grid = FrameSampleGrid(options);
-    return Faster(scene, widthCells * grid.across, heightCells * grid.down);
-  }
+  /// Whether frames of widthCells x heightCells drawn with `options` would
+  /// walk a hierarchy of the scene, were one attached: a frame the walk
+  /// serves (zbuffer, cull or auto, back faces culled, the product's
+  /// geometry and depth; several samples a cell only when drawn on threads)
+  /// with the triangles a sample of its grid for the walk to be quicker.
+  /// Front ends build a hierarchy only then.
+  static bool WouldWalk(const Scene& scene, int widthCells, int heightCells,
+                        const RenderOptions& options);
 
   /// Draws; returns the triangles rasterized (as ClusterStage counts them).
   int Draw(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame, int threads,

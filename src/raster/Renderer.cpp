@@ -348,7 +348,7 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   const bool wanted = use == HierarchyUse::kAlways ||
                       (use == HierarchyUse::kWhenFaster &&
                        HierarchyStage::Faster(scene, cells.WidthCells(), cells.HeightCells()));
-  const TriangleBvh* const bvh = wanted ? scene.hierarchy.Get(scene) : nullptr;
+  const std::shared_ptr<const TriangleBvh> bvh = wanted ? scene.hierarchy.Get(scene) : nullptr;
   drewByHierarchy_ = bvh != nullptr && HierarchyStage::Applies(scene, *bvh, frame);
   if (drewByHierarchy_) return hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells);
   return clusterStage_.Draw(scene, frame, threads, depth, cells);

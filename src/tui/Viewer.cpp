@@ -201,8 +201,8 @@ class EventLoop {
   void UpdateHierarchyJob() {
     const std::shared_ptr<const Scene>& scene = state_.SharedScene();
     if (hierarchyJob_ && hierarchyJob_->ForScene() != scene) {
+      abandonedLoad_ = abandonedLoad_ || !hierarchyJob_->Finished();  // may still be running
       hierarchyJob_.reset();
-      abandonedLoad_ = true;  // a cancelled build may still be running
       ReturnFreedMemory();
     }
     if (hierarchyJob_ && hierarchyJob_->Finished()) {
@@ -212,7 +212,7 @@ class EventLoop {
     }
     if (!hierarchyJob_ && !detailJob_ && !job_ && framesDrawn_ > 0 && scene &&
         state_.Detail() == DetailMode::kOff && hierarchyTriedFor_.lock() != scene &&
-        HierarchyStage::FasterFor(*scene, cells_.WidthCells(), cells_.HeightCells(),
+        HierarchyStage::WouldWalk(*scene, cells_.WidthCells(), cells_.HeightCells(),
                                   frameOptions_)) {
       hierarchyTriedFor_ = scene;
       hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
