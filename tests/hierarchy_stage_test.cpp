@@ -17,6 +17,7 @@
 #include "geometry/FitCamera.h"
 #include "geometry/TriangleBvh.h"
 #include "io/SceneGenerators.h"
+#include "raster/HierarchyStage.h"
 #include "raster/Renderer.h"
 #include "support/FrameCompare.h"
 #include "support/TestSupport.h"
@@ -206,6 +207,32 @@ TEST(TriangleBvh, FacingNearTheAxisOfAFloatConeIsNotTowardABackFace) {
   node.heightMax = node.heightMin;
   ASSERT_FALSE(face.FacesPoint(eye));
   EXPECT_NE(NodeFacing(node, eye), ClusterFacing::kToward) << "axis off unit by " << delta;
+}
+
+// Front ends build a hierarchy only for frames that would walk it: enough
+// triangles a sample of the frame's grid, and a frame the walk serves.
+TEST(HierarchyStage, WouldWalkOnlyFramesItServes) {
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(20000));
+  RenderOptions ramp;
+  ramp.method = Method::kAuto;
+  ramp.threads = 2;
+  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 8, 4, ramp));     // 625 triangles a sample
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 80, 24, ramp));  // 10 a sample
+  RenderOptions other = ramp;
+  other.method = Method::kPainter;
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 8, 4, other));
+  other = ramp;
+  other.cullBackFaces = false;
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 8, 4, other));
+  other = ramp;
+  other.variant.hierarchy = HierarchyUse::kNever;
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 8, 4, other));
+  other = ramp;
+  other.glyphs = GlyphMode::kAscii;  // 2x4 samples a cell: 78 a sample at 8x4
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 8, 4, other));
+  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 3, 1, other));  // 833 a sample, on threads
+  other.threads = 1;  // the sampled rasterizer draws it, not the walk
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 3, 1, other));
 }
 
 // A hierarchy serves only the triangles it was built over; copies of a scene share it.
