@@ -217,6 +217,8 @@ TEST(HierarchyStage, WouldWalkOnlyFramesItServes) {
   ramp.method = Method::kAuto;
   ramp.threads = 2;
   EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 8, 4, ramp));     // 625 triangles a sample
+  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 16, 8, ramp));    // 156 a sample: timed against
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 20, 12, ramp));  // 83 a sample
   EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 80, 24, ramp));  // 10 a sample
   RenderOptions other = ramp;
   other.method = Method::kPainter;
@@ -327,6 +329,35 @@ TEST(HierarchyStage, SmallScenesMatchTheFaceLoop) {
   nan.AddFace(std::array<uint32_t, 3>{0, 1, 4});
   nan.AddFace(std::array<uint32_t, 3>{0, 0, 1});  // collinear
   ExpectHierarchyFramesMatch("nan and collinear", PrepareScene(nan), {80, 24});
+}
+
+// Where both passes may draw (kWhenFaster, enough triangles a sample) the
+// renderer times them against each other: the first frames take both in
+// turn, and every frame, whichever pass drew it, is the cluster pass's.
+TEST(HierarchyStage, MeasuredChoiceDrawsBothPassesWithTheSameFrames) {
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(60000));
+  sphere.hierarchy.Attach(Hierarchy(sphere));
+  RenderOptions clusters;
+  clusters.method = Method::kAuto;
+  clusters.threads = 2;
+  clusters.threadsFromTriangles = 0;
+  clusters.variant.hierarchy = HierarchyUse::kNever;
+  RenderOptions measured = clusters;
+  measured.variant.hierarchy = HierarchyUse::kWhenFaster;
+  Renderer reference, chooser;
+  int walked = 0, notWalked = 0;
+  for (int frame = 0; frame < 24; ++frame) {
+    const test::OrbitView view{0.2 * frame, 1.2, 1.0};
+    const test::DrawnFrame expected = test::DrawOrbit(reference, sphere, view, 24, 12, clusters);
+    const test::DrawnFrame actual = test::DrawOrbit(chooser, sphere, view, 24, 12, measured);
+    test::ExpectSameFrame(expected, actual, "frame " + std::to_string(frame));
+    (actual.stats.byHierarchy ? walked : notWalked) += 1;
+    if (frame == 3) {
+      EXPECT_EQ(walked, 2) << "the first four frames take both passes in turn";
+    }
+  }
+  EXPECT_GT(walked, 0);
+  EXPECT_GT(notWalked, 0);
 }
 
 TEST(HierarchyStage, Sphere200kMatchesTheFaceLoopAndIsWalked) {

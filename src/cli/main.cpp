@@ -372,7 +372,7 @@ int Run(int argc, char** argv) {
   CLI::App* frameCommand = benchCommand->add_subcommand(
       "frame",
       "frame time by triangles x cells: the hierarchy walk against clusters, 1 thread against all, "
-      "culling on and off");
+      "culling on and off, and the measured choice between the two passes (the default)");
   frameCommand
       ->add_option("--models", frameBench.modelPaths,
                    "model files to time (default: the demo scene)")

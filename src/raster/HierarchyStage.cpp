@@ -252,7 +252,7 @@ bool HierarchyStage::WouldWalk(const Scene& scene, int widthCells, int heightCel
   const SampleGrid grid = FrameSampleGrid(options);
   // Several samples a cell on one thread go to the sampled rasterizer, which does not walk.
   if (grid.Count() > 1 && ResolvedThreadCount(options.threads) <= 1) return false;
-  return Faster(scene, widthCells * grid.across, heightCells * grid.down);
+  return WorthTrying(scene, widthCells * grid.across, heightCells * grid.down);
 }
 
 int HierarchyStage::Draw(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame,

@@ -32,19 +32,32 @@ class HierarchyStage {
   /// lies in front of twice the near distance and inside half the guard band).
   static bool Applies(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame);
 
-  /// From this many triangles a sample the walk is quicker than the cluster
-  /// pass (bench frame on spheres of 0.2M to 6M triangles at 80x24 to 400x120:
-  /// 0.24x at 3,100 a sample, 0.5x at 800, even at about 260, 1.7x at 40).
+  /// From this many triangles a sample the walk was quicker than the cluster
+  /// pass on the machine it was first measured on (bench frame on spheres of
+  /// 0.2M to 6M triangles at 80x24 to 400x120: 0.24x at 3,100 a sample, 0.5x
+  /// at 800, even at about 260, 1.7x at 40); another machine put the
+  /// crossover near 450. The pass drawn first where both are tried.
   static constexpr double kFasterFromTrianglesPerSample = 250.0;
   static bool Faster(const Scene& scene, int widthSamples, int heightSamples) {
-    return static_cast<double>(scene.triangles.size()) >=
-           kFasterFromTrianglesPerSample * widthSamples * heightSamples;
+    return TrianglesPerSample(scene, widthSamples, heightSamples) >= kFasterFromTrianglesPerSample;
+  }
+  /// From this many triangles a sample the renderer times the walk against
+  /// the cluster pass and draws by the quicker (SurfacePassChoice); below
+  /// it the walk took 1.4x (about 100 a sample) to 2.4x the cluster pass's
+  /// time on both machines measured.
+  static constexpr double kTriedFromTrianglesPerSample = 100.0;
+  static bool WorthTrying(const Scene& scene, int widthSamples, int heightSamples) {
+    return TrianglesPerSample(scene, widthSamples, heightSamples) >= kTriedFromTrianglesPerSample;
+  }
+  static double TrianglesPerSample(const Scene& scene, int widthSamples, int heightSamples) {
+    return static_cast<double>(scene.triangles.size()) /
+           (static_cast<double>(widthSamples) * heightSamples);
   }
   /// Whether frames of widthCells x heightCells drawn with `options` would
   /// walk a hierarchy of the scene, were one attached: a frame the walk
   /// serves (zbuffer, cull or auto, back faces culled, the product's
   /// geometry and depth; several samples a cell only when drawn on threads)
-  /// with the triangles a sample of its grid for the walk to be quicker.
+  /// with the triangles a sample of its grid for the walk to be worth trying.
   /// Front ends build a hierarchy only then.
   static bool WouldWalk(const Scene& scene, int widthCells, int heightCells,
                         const RenderOptions& options);

@@ -49,8 +49,9 @@ struct RenderVariant {
   /// One-sample zbuffer and cull frames of a scene with a hierarchy
   /// (Scene::hierarchy) walk it (src/raster/HierarchyStage) where that is
   /// exact for the view: kWhenFaster when the scene has many triangles a
-  /// sample, kAlways whatever the count (tests, bench); else cluster by
-  /// cluster. The same frame either way.
+  /// sample and the walk is measured quicker (SurfacePassChoice), kAlways
+  /// whatever the count (tests, bench); else cluster by cluster. The same
+  /// frame either way.
   HierarchyUse hierarchy = HierarchyUse::kWhenFaster;
   /// Several samples a cell on one thread: drawn cell by cell into the glyph
   /// stage's layout (src/raster/SampledRasterizer); false: drawn as a one-sample

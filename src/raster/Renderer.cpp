@@ -1,6 +1,7 @@
 #include "raster/Renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "geometry/HugePages.h"
@@ -345,13 +346,32 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   // The scanline variant steps rows in float from its first row: one band only.
   const int threads = options.variant.scanline ? 1 : ResolvedThreadCount(options.threads);
   const HierarchyUse use = options.variant.hierarchy;
-  const bool wanted = use == HierarchyUse::kAlways ||
-                      (use == HierarchyUse::kWhenFaster &&
-                       HierarchyStage::Faster(scene, cells.WidthCells(), cells.HeightCells()));
+  const int width = cells.WidthCells(), height = cells.HeightCells();
+  const bool wanted =
+      use == HierarchyUse::kAlways ||
+      (use == HierarchyUse::kWhenFaster && HierarchyStage::WorthTrying(scene, width, height));
   const std::shared_ptr<const TriangleBvh> bvh = wanted ? scene.hierarchy.Get(scene) : nullptr;
   drewByHierarchy_ = bvh != nullptr && HierarchyStage::Applies(scene, *bvh, frame);
-  if (drewByHierarchy_) return hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells);
-  return clusterStage_.Draw(scene, frame, threads, depth, cells);
+  if (!drewByHierarchy_) return clusterStage_.Draw(scene, frame, threads, depth, cells);
+  if (use == HierarchyUse::kAlways) {
+    return hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells);
+  }
+  // Both passes draw this frame bit for bit: take the one measured quicker here.
+  const uint64_t key = reinterpret_cast<uintptr_t>(bvh.get()) ^
+                       (static_cast<uint64_t>(width) << 48) ^
+                       (static_cast<uint64_t>(height) << 32) ^ static_cast<uint64_t>(threads);
+  const SurfacePass prior = HierarchyStage::Faster(scene, width, height) ? SurfacePass::kHierarchy
+                                                                         : SurfacePass::kClusters;
+  const SurfacePass pass = passChoice_.Pick(key, prior);
+  drewByHierarchy_ = pass == SurfacePass::kHierarchy;
+  const auto start = std::chrono::steady_clock::now();
+  const int drawn = drewByHierarchy_
+                        ? hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells)
+                        : clusterStage_.Draw(scene, frame, threads, depth, cells);
+  passChoice_.Record(
+      pass,
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  return drawn;
 }
 
 int Renderer::DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,

@@ -15,6 +15,7 @@
 #include "raster/HierarchyStage.h"
 #include "raster/RenderOptions.h"
 #include "raster/SampleFrame.h"
+#include "raster/SurfacePassChoice.h"
 #include "raster/TriangleRasterizer.h"
 
 namespace termshade {
@@ -89,6 +90,7 @@ class Renderer {
   ClusterStage clusterStage_;
   HierarchyStage hierarchyStage_;
   bool drewByHierarchy_ = false;  ///< the last DrawClusters walked the hierarchy
+  SurfacePassChoice passChoice_;  ///< walk or clusters, by their times (HierarchyUse::kWhenFaster)
   SampleGrid lastGrid_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
