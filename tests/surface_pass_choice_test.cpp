@@ -53,7 +53,7 @@ TEST(SurfacePassChoice, KeepsTheQuickerAndProbesTheOtherEverLessOften) {
   std::vector<int> expected{0, 2};
   int at = 3;
   for (int wait = 8; wait <= 256; wait *= 2) expected.push_back(at += wait);
-  expected.push_back(at += 256);
+  expected.push_back(at + 256);  // the longest wait again
   EXPECT_EQ(FramesOf(picked, kH), expected);
 }
 
