@@ -216,8 +216,10 @@ TEST(HierarchyStage, WouldWalkOnlyFramesItServes) {
   RenderOptions ramp;
   ramp.method = Method::kAuto;
   ramp.threads = 2;
-  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 8, 4, ramp));     // 625 triangles a sample
-  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 16, 8, ramp));    // 156 a sample: timed against
+  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 8, 4, ramp));   // 625 triangles a sample
+  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 16, 8, ramp));  // 156 a sample: timed against
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 16, 8, ramp,   // render builds from 250
+                                         HierarchyStage::kFasterFromTrianglesPerSample));
   EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 20, 12, ramp));  // 83 a sample
   EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 80, 24, ramp));  // 10 a sample
   RenderOptions other = ramp;

@@ -189,9 +189,11 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       continue;
     }
     const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
-    // A long turntable of a big scene: the hierarchy pays for its build (same frames).
+    // A long turntable of a big scene: the hierarchy pays for its build (same
+    // frames). Built on this thread, so only where the walk was quicker somewhere.
     if (options.frames >= kHierarchyFromFrames && *detail == DetailMode::kOff &&
-        HierarchyStage::WouldWalk(scene, widthCells, heightCells, renderOptions)) {
+        HierarchyStage::WouldWalk(scene, widthCells, heightCells, renderOptions,
+                                  HierarchyStage::kFasterFromTrianglesPerSample)) {
       scene.hierarchy.Attach(std::make_shared<const TriangleBvh>(BuildTriangleBvh(scene)));
     }
     std::optional<DetailLevels> levels;

@@ -239,7 +239,7 @@ bool HierarchyStage::Applies(const Scene& scene, const TriangleBvh& bvh,
 }
 
 bool HierarchyStage::WouldWalk(const Scene& scene, int widthCells, int heightCells,
-                               const RenderOptions& options) {
+                               const RenderOptions& options, double fromTrianglesPerSample) {
   const Method method = options.method;
   const RenderVariant& variant = options.variant;
   if ((method != Method::kZBuffer && method != Method::kCull && method != Method::kAuto) ||
@@ -252,7 +252,8 @@ bool HierarchyStage::WouldWalk(const Scene& scene, int widthCells, int heightCel
   const SampleGrid grid = FrameSampleGrid(options);
   // Several samples a cell on one thread go to the sampled rasterizer, which does not walk.
   if (grid.Count() > 1 && ResolvedThreadCount(options.threads) <= 1) return false;
-  return WorthTrying(scene, widthCells * grid.across, heightCells * grid.down);
+  return TrianglesPerSample(scene, widthCells * grid.across, heightCells * grid.down) >=
+         fromTrianglesPerSample;
 }
 
 int HierarchyStage::Draw(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame,

@@ -57,10 +57,12 @@ class HierarchyStage {
   /// walk a hierarchy of the scene, were one attached: a frame the walk
   /// serves (zbuffer, cull or auto, back faces culled, the product's
   /// geometry and depth; several samples a cell only when drawn on threads)
-  /// with the triangles a sample of its grid for the walk to be worth trying.
-  /// Front ends build a hierarchy only then.
+  /// with at least `fromTrianglesPerSample` triangles a sample of its grid
+  /// (the default: the walk is worth trying). Front ends build a hierarchy
+  /// only then.
   static bool WouldWalk(const Scene& scene, int widthCells, int heightCells,
-                        const RenderOptions& options);
+                        const RenderOptions& options,
+                        double fromTrianglesPerSample = kTriedFromTrianglesPerSample);
 
   /// Draws; returns the triangles rasterized (as ClusterStage counts them).
   int Draw(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame, int threads,
