@@ -356,9 +356,15 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   if (use == HierarchyUse::kAlways) {
     return hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells);
   }
-  // Both passes draw this frame bit for bit: take the one measured quicker here.
-  const uint64_t key = reinterpret_cast<uintptr_t>(bvh.get()) ^
-                       (static_cast<uint64_t>(width) << 48) ^
+  return DrawByQuickerPass(scene, *bvh, frame, threads, depth, cells);
+}
+
+// Both passes draw this frame bit for bit: the one measured quicker here.
+int Renderer::DrawByQuickerPass(const Scene& scene, const TriangleBvh& bvh,
+                                const ClusterFrame& frame, int threads, DepthBuffer& depth,
+                                CellBuffer& cells) {
+  const int width = cells.WidthCells(), height = cells.HeightCells();
+  const uint64_t key = reinterpret_cast<uintptr_t>(&bvh) ^ (static_cast<uint64_t>(width) << 48) ^
                        (static_cast<uint64_t>(height) << 32) ^ static_cast<uint64_t>(threads);
   const SurfacePass prior = HierarchyStage::Faster(scene, width, height) ? SurfacePass::kHierarchy
                                                                          : SurfacePass::kClusters;
@@ -366,7 +372,7 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   drewByHierarchy_ = pass == SurfacePass::kHierarchy;
   const auto start = std::chrono::steady_clock::now();
   const int drawn = drewByHierarchy_
-                        ? hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells)
+                        ? hierarchyStage_.Draw(scene, bvh, frame, threads, depth, cells)
                         : clusterStage_.Draw(scene, frame, threads, depth, cells);
   passChoice_.Record(
       pass,

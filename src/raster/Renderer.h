@@ -64,6 +64,8 @@ class Renderer {
                    DepthBuffer& depth, CellBuffer& cells);
   int DrawClusters(const Scene& scene, const Camera& camera, const RenderOptions& options,
                    DepthBuffer& depth, CellBuffer& cells, TriangleSink* sink = nullptr);
+  int DrawByQuickerPass(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame,
+                        int threads, DepthBuffer& depth, CellBuffer& cells);
   int DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,
                 DepthBuffer& depth, CellBuffer& cells);
   int ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells);
