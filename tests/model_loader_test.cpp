@@ -158,6 +158,9 @@ INSTANTIATE_TEST_SUITE_P(
                  ": all 3 of its faces have no area (corners on a line or at a point)"},
         BadModel{"off_counts_beyond_file_size.off", "the header promises 353535235358 vertices"},
         BadModel{"off_header_counts_huge.off", "the header promises 900000000 vertices"},
+        BadModel{"off_header_counts_huge_named_glb.glb",
+                 "content read as OFF: the header promises 900000000 vertices and 900000000 "
+                 "faces"},
         BadModel{"obj_mtllib_absolute_path.obj", "refused to read '/etc/passwd': an absolute path"},
         BadModel{"obj_mtllib_leaves_folder.obj",
                  "refused to read '../../../../../../etc/passwd': a path that leaves the model's"},

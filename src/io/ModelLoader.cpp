@@ -79,20 +79,24 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
     return LoadError{place.displayName, 0, 0, std::move(message)};
   };
   // Counts in the header against the bytes that follow it (under another
-  // name, the message says which format the content was read as).
-  const auto headerProblem = [&](std::string_view read) -> std::optional<std::string> {
+  // name, the message says which format the content was read as). For the
+  // importer, OFF under any name: when the importer its name picks refuses
+  // the content, Assimp tries them all on it (libFuzzer: an OFF header
+  // promising 9e8 vertices, named .glb, asked for 14 GB).
+  const auto headerProblem = [&](std::string_view read,
+                                 bool offUnderAnyName) -> std::optional<std::string> {
     const auto as = [&](const char* checked, std::optional<std::string> problem) {
       if (problem && format != checked)
         *problem = "content read as " + ToUpper(checked) + ": " + *problem;
       return problem;
     };
-    if (format == "off" || format.empty()) {
+    if (format == "off" || format.empty() || offUnderAnyName) {
       if (auto problem = as("off", CheckHeaderCounts("off", read))) return problem;
     }
     return as("ply", CheckHeaderCounts("ply", read));
   };
   // Step 1: the header's counts, for our readers.
-  if (auto problem = headerProblem(bytes.View())) return fail(std::move(*problem));
+  if (auto problem = headerProblem(bytes.View(), false)) return fail(std::move(*problem));
   const auto overBudget = [&](size_t needed) { return needed > options.memoryBudgetBytes; };
   // Step 2: a dedicated reader where one takes the file, within its own
   // estimate, then the mesh's real size (file still held) against the budget.
@@ -135,7 +139,7 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   // so the header's counts are checked again on the bytes it gets.
   std::string text = bytes.TakeString();
   if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
-  if (auto problem = headerProblem(text)) return fail(std::move(*problem));
+  if (auto problem = headerProblem(text, true)) return fail(std::move(*problem));
   if (auto problem = CheckPlyHeaderForImporter(text, place.displayName)) {
     if (format != "ply") problem->message = "content read as PLY: " + problem->message;
     return *problem;
