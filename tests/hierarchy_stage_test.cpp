@@ -216,11 +216,12 @@ TEST(HierarchyStage, WouldWalkOnlyFramesItServes) {
   RenderOptions ramp;
   ramp.method = Method::kAuto;
   ramp.threads = 2;
-  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 8, 4, ramp));   // 625 triangles a sample
-  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 16, 8, ramp));  // 156 a sample: timed against
-  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 16, 8, ramp,   // render builds from 250
+  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 8, 4, ramp));  // 625 a sample: timed against
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 8, 4, ramp,   // render builds from 700
                                          HierarchyStage::kFasterFromTrianglesPerSample));
-  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 20, 12, ramp));  // 83 a sample
+  EXPECT_TRUE(HierarchyStage::WouldWalk(sphere, 6, 4, ramp,  // 833 a sample
+                                        HierarchyStage::kFasterFromTrianglesPerSample));
+  EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 16, 8, ramp));   // 156 a sample
   EXPECT_FALSE(HierarchyStage::WouldWalk(sphere, 80, 24, ramp));  // 10 a sample
   RenderOptions other = ramp;
   other.method = Method::kPainter;
@@ -334,11 +335,12 @@ TEST(HierarchyStage, SmallScenesMatchTheFaceLoop) {
 }
 
 // Where both passes may draw (kWhenFaster, enough triangles a sample) the
-// renderer times them against each other: the first frames take both in
-// turn, and every frame, whichever pass drew it, is the cluster pass's.
+// renderer times them against each other: after a key's first frame (the
+// prior's, uncounted) each pass draws two frames in turn, and every frame,
+// whichever pass drew it, is the cluster pass's. Another frame size or
+// another hierarchy (a new scene) starts the timing over.
 TEST(HierarchyStage, MeasuredChoiceDrawsBothPassesWithTheSameFrames) {
-  const Scene sphere = PrepareScene(GenerateTriangleSphere(60000));
-  sphere.hierarchy.Attach(Hierarchy(sphere));
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(60000));  // 468 a sample at 16x8
   RenderOptions clusters;
   clusters.method = Method::kAuto;
   clusters.threads = 2;
@@ -347,19 +349,29 @@ TEST(HierarchyStage, MeasuredChoiceDrawsBothPassesWithTheSameFrames) {
   RenderOptions measured = clusters;
   measured.variant.hierarchy = HierarchyUse::kWhenFaster;
   Renderer reference, chooser;
-  int walked = 0, notWalked = 0;
-  for (int frame = 0; frame < 24; ++frame) {
-    const test::OrbitView view{0.2 * frame, 1.2, 1.0};
-    const test::DrawnFrame expected = test::DrawOrbit(reference, sphere, view, 24, 12, clusters);
-    const test::DrawnFrame actual = test::DrawOrbit(chooser, sphere, view, 24, 12, measured);
-    test::ExpectSameFrame(expected, actual, "frame " + std::to_string(frame));
-    (actual.stats.byHierarchy ? walked : notWalked) += 1;
-    if (frame == 3) {
-      EXPECT_EQ(walked, 2) << "the first four frames take both passes in turn";
+  int frame = 0;
+  // The walked frames among the next five at width x height, each checked against the clusters'.
+  auto walkedOfFive = [&](int width, int height) {
+    int walked = 0;
+    for (int k = 0; k < 5; ++k, ++frame) {
+      const test::OrbitView view{0.2 * frame, 1.2, 1.0};
+      const test::DrawnFrame expected =
+          test::DrawOrbit(reference, sphere, view, width, height, clusters);
+      const test::DrawnFrame actual =
+          test::DrawOrbit(chooser, sphere, view, width, height, measured);
+      test::ExpectSameFrame(expected, actual, "frame " + std::to_string(frame));
+      walked += actual.stats.byHierarchy ? 1 : 0;
     }
-  }
-  EXPECT_GT(walked, 0);
-  EXPECT_GT(notWalked, 0);
+    return walked;
+  };
+  sphere.hierarchy.Attach(Hierarchy(sphere));
+  // Once timing has begun, five frames of one key walk 0 or 5 times, never 2.
+  EXPECT_EQ(walkedOfFive(16, 8), 2)
+      << "the prior (clusters) twice and uncounted once, the walk twice";
+  EXPECT_EQ(walkedOfFive(15, 8), 2) << "another size starts over";
+  sphere.hierarchy.Attach(Hierarchy(sphere));  // a new hierarchy, maybe at the old one's address
+  EXPECT_EQ(walkedOfFive(15, 8), 2) << "another hierarchy starts over";
+  for (int k = 0; k < 6; ++k) walkedOfFive(15, 8);  // the chosen pass and its probes
 }
 
 TEST(HierarchyStage, Sphere200kMatchesTheFaceLoopAndIsWalked) {

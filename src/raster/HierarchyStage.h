@@ -33,19 +33,19 @@ class HierarchyStage {
   static bool Applies(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame);
 
   /// From this many triangles a sample the walk was quicker than the cluster
-  /// pass on the machine it was first measured on (bench frame on spheres of
-  /// 0.2M to 6M triangles at 80x24 to 400x120: 0.24x at 3,100 a sample, 0.5x
-  /// at 800, even at about 260, 1.7x at 40); another machine put the
-  /// crossover near 450. The pass drawn first where both are tried.
-  static constexpr double kFasterFromTrianglesPerSample = 250.0;
+  /// pass on both machines measured (bench frame on spheres of 0.2M to 6M
+  /// triangles at 80x24 to 400x120: 0.24x-0.30x at 3,100 a sample, 0.5x-0.6x
+  /// at 1,040, 0.5x-0.7x at 780). The pass drawn first where both are timed,
+  /// and where render (building before its first frame) builds a hierarchy.
+  static constexpr double kFasterFromTrianglesPerSample = 700.0;
   static bool Faster(const Scene& scene, int widthSamples, int heightSamples) {
     return TrianglesPerSample(scene, widthSamples, heightSamples) >= kFasterFromTrianglesPerSample;
   }
   /// From this many triangles a sample the renderer times the walk against
-  /// the cluster pass and draws by the quicker (SurfacePassChoice); below
-  /// it the walk took 1.4x (about 100 a sample) to 2.4x the cluster pass's
-  /// time on both machines measured.
-  static constexpr double kTriedFromTrianglesPerSample = 100.0;
+  /// the cluster pass and draws by the quicker (SurfacePassChoice): the
+  /// crossover on the first machine measured (about 260; the second put it
+  /// near 450); below it neither machine's walk was quicker.
+  static constexpr double kTriedFromTrianglesPerSample = 250.0;
   static bool WorthTrying(const Scene& scene, int widthSamples, int heightSamples) {
     return TrianglesPerSample(scene, widthSamples, heightSamples) >= kTriedFromTrianglesPerSample;
   }

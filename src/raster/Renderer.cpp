@@ -356,26 +356,30 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   if (use == HierarchyUse::kAlways) {
     return hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells);
   }
-  return DrawByQuickerPass(scene, *bvh, frame, threads, depth, cells);
+  return DrawByQuickerPass(scene, bvh, frame, threads, depth, cells);
 }
 
 // Both passes draw this frame bit for bit: the one measured quicker here.
-int Renderer::DrawByQuickerPass(const Scene& scene, const TriangleBvh& bvh,
+int Renderer::DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const TriangleBvh>& bvh,
                                 const ClusterFrame& frame, int threads, DepthBuffer& depth,
                                 CellBuffer& cells) {
+  // Another hierarchy, even at a freed one's address, is another key.
+  const bool sameHierarchy =
+      !choiceHierarchy_.owner_before(bvh) && !bvh.owner_before(choiceHierarchy_);
+  if (!sameHierarchy) {
+    choiceHierarchy_ = bvh;
+    ++choiceHierarchySerial_;
+  }
   const int width = cells.WidthCells(), height = cells.HeightCells();
-  const uint64_t key = reinterpret_cast<uintptr_t>(&bvh) ^ (static_cast<uint64_t>(width) << 48) ^
-                       (static_cast<uint64_t>(height) << 32) ^ static_cast<uint64_t>(threads);
+  const SurfaceChoiceKey key{choiceHierarchySerial_, width, height, threads};
   const SurfacePass prior = HierarchyStage::Faster(scene, width, height) ? SurfacePass::kHierarchy
                                                                          : SurfacePass::kClusters;
-  const SurfacePass pass = passChoice_.Pick(key, prior);
-  drewByHierarchy_ = pass == SurfacePass::kHierarchy;
+  drewByHierarchy_ = passChoice_.Pick(key, prior) == SurfacePass::kHierarchy;
   const auto start = std::chrono::steady_clock::now();
   const int drawn = drewByHierarchy_
-                        ? hierarchyStage_.Draw(scene, bvh, frame, threads, depth, cells)
+                        ? hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells)
                         : clusterStage_.Draw(scene, frame, threads, depth, cells);
   passChoice_.Record(
-      pass,
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   return drawn;
 }

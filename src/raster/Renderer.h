@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -64,8 +65,9 @@ class Renderer {
                    DepthBuffer& depth, CellBuffer& cells);
   int DrawClusters(const Scene& scene, const Camera& camera, const RenderOptions& options,
                    DepthBuffer& depth, CellBuffer& cells, TriangleSink* sink = nullptr);
-  int DrawByQuickerPass(const Scene& scene, const TriangleBvh& bvh, const ClusterFrame& frame,
-                        int threads, DepthBuffer& depth, CellBuffer& cells);
+  int DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const TriangleBvh>& bvh,
+                        const ClusterFrame& frame, int threads, DepthBuffer& depth,
+                        CellBuffer& cells);
   int DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,
                 DepthBuffer& depth, CellBuffer& cells);
   int ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells);
@@ -93,6 +95,8 @@ class Renderer {
   HierarchyStage hierarchyStage_;
   bool drewByHierarchy_ = false;  ///< the last DrawClusters walked the hierarchy
   SurfacePassChoice passChoice_;  ///< walk or clusters, by their times (HierarchyUse::kWhenFaster)
+  std::weak_ptr<const TriangleBvh> choiceHierarchy_;  ///< the hierarchy passChoice_ timed
+  uint64_t choiceHierarchySerial_ = 0;                ///< bumped when it changes
   SampleGrid lastGrid_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
