@@ -22,8 +22,10 @@ endforeach()
 add_custom_target(termshade_docs ALL DEPENDS ${TERMSHADE_GENERATED_FILES})
 
 install(TARGETS termshade RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# The Assimp import module, where the program looks for it (src/io/AssimpImport.h).
+# The Assimp import module and the import helper that runs it, where the
+# program looks for them (src/io/OwnFile.h).
 install(TARGETS termshade_assimp LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/termshade)
+install(TARGETS termshade_import RUNTIME DESTINATION ${CMAKE_INSTALL_LIBDIR}/termshade)
 install(FILES ${TERMSHADE_GENERATED}/termshade.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES ${TERMSHADE_GENERATED}/termshade.bash
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME termshade)

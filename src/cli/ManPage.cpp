@@ -188,7 +188,9 @@ void WriteManPage(const CommandModel& root, const std::string& version,
       << "Read through the Open Asset Import Library (Assimp) with polygons kept (binary STL, "
          "PLY and plain OBJ by termshade's own readers). Assimp sits in the module "
          "termshade-assimp.so, in the termshade folder of the library directory beside the "
-         "program's, loaded only for a file that needs it. Every extension read: ";
+         "program's, loaded only for a file that needs it; each import runs in a child "
+         "process, termshade-import, beside it, under memory and processor-time limits, so "
+         "a file that crashes or hangs the importer is refused (exit 1). Every extension read: ";
   std::string list;
   for (const std::string& extension : modelExtensions) {
     list += (list.empty() ? "" : ", ") + std::string(".") + extension;

@@ -360,8 +360,9 @@ int Run(int argc, char** argv) {
       ->check(CLI::IsMember({"obj", "stl", "ply"}));
   loadCommand
       ->add_option("--readers", loadBench.readers,
-                   "render --reader values to compare (default auto assimp)")
-      ->check(CLI::IsMember({"auto", "assimp"}));
+                   "render --reader values to compare (default auto assimp), or "
+                   "assimp-in-process: Assimp's read time outside its helper process")
+      ->check(CLI::IsMember({"auto", "assimp", "assimp-in-process"}));
   loadCommand->add_option("--repeats", loadBench.repeats, "runs per model (default 3)")
       ->check(CLI::Range(1, 100));
   loadCommand

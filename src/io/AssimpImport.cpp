@@ -1,8 +1,6 @@
 #include "io/AssimpImport.h"
 
 #include <dlfcn.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -10,6 +8,8 @@
 #include <new>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/OwnFile.h"
 
 namespace termshade {
 namespace {
@@ -20,40 +20,11 @@ struct OpenedModule {
   std::string problem;
 };
 
-// This program's own folder, from /proc/self/exe; empty when unreadable.
-std::string ExecutableFolder() {
-  std::string path(4096, '\0');
-  const ssize_t length = readlink("/proc/self/exe", path.data(), path.size());
-  if (length <= 0 || static_cast<size_t>(length) >= path.size()) return "";
-  path.resize(static_cast<size_t>(length));
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos || path.front() != '/' ? "" : path.substr(0, slash);
-}
-
-bool IsRegularFile(const std::string& path) {
-  struct stat info {};
-  return stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
-}
-
 OpenedModule OpenModule() {
-  const std::string name = kAssimpModuleName;
   // Step 1: the module's place: installed (bin/../<libdir>/termshade/), else the build tree's.
-  const std::string folder = ExecutableFolder();
-  if (folder.empty()) {
-    return {nullptr, "cannot load the Assimp import module " + name +
-                         ": this program's own path (/proc/self/exe) cannot be read"};
-  }
-  const std::string installed = folder + "/" TERMSHADE_MODULE_FROM_BINDIR "/" + name;
-  const std::string buildTree = folder + "/" + name;
-  std::string path;
-  if (IsRegularFile(installed)) {
-    path = installed;
-  } else if (IsRegularFile(buildTree)) {
-    path = buildTree;
-  } else {
-    return {nullptr, "the Assimp import module " + name + " is missing (looked for " + installed +
-                         " and " + buildTree + "); reinstall termshade"};
-  }
+  const OwnFile found = FindOwnFile(kAssimpModuleName, "the Assimp import module");
+  if (found.path.empty()) return {nullptr, found.problem};
+  const std::string& path = found.path;
   // Step 2: open it, every symbol bound now and kept to itself.
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
@@ -94,6 +65,14 @@ void Rethrow(ModuleStatus status, const std::string& exceptionText) {
 }
 
 }  // namespace
+
+const char* ModuleBuildStamp() {
+  return TERMSHADE_MODULE_STAMP;
+}
+
+void RethrowModuleStatus(ModuleStatus status, const std::string& exceptionText) {
+  Rethrow(status, exceptionText);
+}
 
 Loaded<Mesh> ImportWithAssimp(const ImportSource& source, std::string bytes,
                               const LoadOptions& options) {

@@ -17,10 +17,19 @@ namespace termshade {
 /// the working directory or a search path.
 inline constexpr const char* kAssimpModuleName = "termshade-assimp.so";
 
-/// Imports through Assimp in the module (io/assimp/AssimpImport.h says how).
-/// A module that is missing or from another build is a LoadError naming it.
+/// Imports through Assimp in the module, in this process (io/assimp/AssimpImport.h
+/// says how; the loader runs it in a child, io/IsolatedImport.h). A module
+/// that is missing or from another build is a LoadError naming it.
 Loaded<Mesh> ImportWithAssimp(const ImportSource& source, std::string bytes,
                               const LoadOptions& options);
+
+/// This build's stamp (a hash of the types that cross to the module and the helper).
+const char* ModuleBuildStamp();
+
+/// A module status other than kDone as the exception the call would have
+/// thrown in-process: std::bad_alloc for kOutOfMemory, std::runtime_error
+/// with the text for kException.
+void RethrowModuleStatus(ModuleStatus status, const std::string& exceptionText);
 
 /// True when Assimp has an importer for this extension (without the dot).
 /// obj, stl and ply are answered without loading the module (Assimp reads

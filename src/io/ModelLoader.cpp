@@ -19,6 +19,7 @@
 #include "io/DatReader.h"
 #include "io/FileBytes.h"
 #include "io/FileBytesLoader.h"
+#include "io/IsolatedImport.h"
 #include "io/LoadBudget.h"
 #include "io/OpenGexGuard.h"
 #include "io/OwnReaders.h"
@@ -146,7 +147,8 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   }
   if (auto problem = CheckOpenGexStructure(text, format)) return fail(std::move(*problem));
   if (auto problem = CheckQuick3dCounts(text)) return fail(std::move(*problem));
-  return ImportWithAssimp(source, std::move(text), options);
+  return options.importInProcess ? ImportWithAssimp(source, std::move(text), options)
+                                 : ImportWithAssimpIsolated(source, std::move(text), options);
 }
 
 // A .dat read from a mapping is checked for a changed file after the parse.

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -31,6 +32,11 @@ struct LoadOptions {
   /// Assimp even where a dedicated reader exists (binary STL, PLY, OBJ): the
   /// reference those readers must agree with, for tests and benches.
   bool importerOnly = false;
+  /// Assimp in this process rather than in the import helper
+  /// (io/IsolatedImport.h): for the fuzzers, whose coverage must see it.
+  bool importInProcess = false;
+  /// Processor seconds the import helper may take; 0: 30 s and 1 s a MiB of file.
+  uint32_t importCpuSeconds = 0;
 };
 
 /// Loads a model file: .dat by our own reader (located errors), and the

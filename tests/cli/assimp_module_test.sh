@@ -2,7 +2,8 @@
 # The Assimp import module (termshade-assimp.so) as the program reaches it:
 # not opened for .dat, OBJ, STL or PLY, opened for formats only Assimp reads
 # (and --reader assimp) with the same frame; without it, or with a broken
-# one, a clean error naming it (exit 1), while other formats still render.
+# one, a clean error naming it (exit 1), while other formats still render;
+# the same for the import helper that runs it (termshade-import).
 # Usage: assimp_module_test.sh path/to/termshade source-dir
 set -u
 bin=$1
@@ -27,12 +28,15 @@ printf 'f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n' >>"$
   printf '4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n'
 } >"$work/cube.off"
 
-# What the dynamic loader opens (LD_DEBUG=files), per model.
+# What the dynamic loader opens (LD_DEBUG=files), per model, in the program
+# and in the import helper it starts (a log file a process).
 opened() {  # opened FRAME MODEL [OPTIONS...]: the loader's log of the files it opened
   local frame=$1
   shift
-  LD_DEBUG=files "$bin" render "$@" --size 40x12 -o "$work/$frame" 2>&1 >/dev/null |
-    grep -E 'file=.*\[0\];  (needed|dynamically loaded)'
+  rm -f "$work"/ld.*
+  LD_DEBUG=files LD_DEBUG_OUTPUT="$work/ld" "$bin" render "$@" --size 40x12 -o "$work/$frame" \
+    >/dev/null 2>&1
+  cat "$work"/ld.* 2>/dev/null | grep -E 'file=.*\[0\];  (needed|dynamically loaded)'
 }
 for model in "$work/cube.obj" "$src/data/cube.dat"; do
   log=$(opened "$(basename "$model").txt" "$model")
@@ -42,14 +46,18 @@ for model in "$work/cube.obj" "$src/data/cube.dat"; do
 done
 log=$(opened off.txt "$work/cube.off")
 expect "cube.off: the module is loaded" grep -q 'termshade-assimp.so.*dynamically loaded' <<<"$log"
+expect "cube.off: the import helper runs" grep -q 'needed by .*/termshade-import ' <<<"$log"
 expect "cube.off: same frame as cube.obj" cmp -s "$work/off.txt" "$work/cube.obj.txt"
 log=$(opened assimp.txt "$work/cube.obj" --reader assimp)
 expect "--reader assimp: the module is loaded" grep -q 'termshade-assimp.so' <<<"$log"
+expect "--reader assimp: the import helper runs" grep -q 'needed by .*/termshade-import ' <<<"$log"
 expect "--reader assimp: same frame" cmp -s "$work/assimp.txt" "$work/cube.obj.txt"
 
-# The program alone in a folder: no module next to it (nor in ../lib*/termshade).
+# The program and its import helper alone in a folder: no module next to
+# them (nor in ../lib*/termshade).
 mkdir -p "$work/alone/bin"
 cp "$bin" "$work/alone/bin/termshade"
+cp "$(dirname "$bin")/termshade-import" "$work/alone/bin/termshade-import"
 run_alone() {  # run_alone MODEL: exit code, stderr in $work/err
   "$work/alone/bin/termshade" render "$1" --size 40x12 >"$work/out" 2>"$work/err" </dev/null
 }
@@ -85,6 +93,19 @@ if [ -n "$libz" ]; then
   run_alone "$work/cube.off"
   clean_error "another library as the module" "is not a termshade module" $?
 fi
+# The module beside it but not the import helper that runs it; then another
+# program in the helper's place.
+cp "$(dirname "$bin")/termshade-assimp.so" "$work/alone/bin/termshade-assimp.so"
+rm -f "$work/alone/bin/termshade-import"
+run_alone "$work/cube.off"
+clean_error "without the import helper" "the import helper termshade-import is missing" $?
+expect "without the import helper: says where it looked" grep -qF "$work/alone/bin/termshade-import" "$work/err"
+cp "$(type -P true)" "$work/alone/bin/termshade-import"
+run_alone "$work/cube.off"
+clean_error "another program as the import helper" "the import helper ended without a result" $?
+cp "$(dirname "$bin")/termshade-import" "$work/alone/bin/termshade-import"
+run_alone "$work/cube.off"
+expect "with the module and the helper: OFF renders (exit $?)" cmp -s "$work/out" "$work/cube.obj.txt"
 # Never from the working directory.
 rm -f "$work/alone/bin/termshade-assimp.so"
 cp "$(dirname "$bin")/termshade-assimp.so" "$work/termshade-assimp.so"

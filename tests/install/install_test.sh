@@ -44,6 +44,7 @@ expect "renders the demo scene" bash -c \
   'cd / && "$1" render "$2/data/sphere_cone.dat" --size 40x12 | grep -q "[@#%]"' _ "$bin" "$src"
 # The Assimp module, installed where the installed program looks for it.
 expect "installed: the Assimp module" bash -c 'ls "$1"/lib*/termshade/termshade-assimp.so "$1"/lib/*/termshade/termshade-assimp.so 2>/dev/null | grep -q .' _ "$prefix"
+expect "installed: the import helper beside it" bash -c 'ls "$1"/lib*/termshade/termshade-import "$1"/lib/*/termshade/termshade-import 2>/dev/null | grep -q .' _ "$prefix"
 printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' \
   >"$prefix/tetrahedron.off"
 expect "renders an OFF file through the installed module" bash -c \

@@ -207,6 +207,10 @@ std::string ImporterMessage(const std::string& raw, const ImportSource& source) 
     return "not a model file (no importer recognises its content)";
   }
   if (text.empty()) return "the importer rejected the file without giving a reason";
+  // Assimp catches what its importers throw, std::bad_alloc too.
+  if (text == "std::bad_alloc") {
+    return "the importer ran out of memory (it may take no more than the memory budget)";
+  }
   return "cannot import: " + text;
 }
 

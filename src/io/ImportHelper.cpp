@@ -1,0 +1,111 @@
+#include "io/ImportHelper.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <new>
+#include <string>
+
+#include "io/AssimpImport.h"
+#include "io/ImportWire.h"
+
+namespace termshade {
+namespace {
+
+bool WriteAll(int fd, const void* from, size_t size) {
+  const auto* bytes = static_cast<const char*>(from);
+  size_t done = 0;
+  while (done < size) {
+    const ssize_t n = write(fd, bytes + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
+  }
+  return true;
+}
+
+bool ReadAll(int fd, void* to, size_t size) {
+  auto* at = static_cast<char*>(to);
+  while (size > 0) {
+    const ssize_t n = read(fd, at, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    at += n;
+    size -= static_cast<size_t>(n);
+  }
+  return true;
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+}  // namespace
+
+void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t cpuSeconds) {
+  const rlimit noCore{0, 0};
+  setrlimit(RLIMIT_CORE, &noCore);
+  if (cpuSeconds > 0) {
+    const rlimit cpu{cpuSeconds, cpuSeconds + 1};
+    setrlimit(RLIMIT_CPU, &cpu);
+  }
+  if (addressSpaceBytes > 0 && !kAddressSanitizer) {
+    const rlimit space{addressSpaceBytes, addressSpaceBytes};
+    setrlimit(RLIMIT_AS, &space);
+  }
+}
+
+int ServeImportRequest(int requestFd, int frameFd) {
+  const WireSink sink = [&](const void* from, size_t size) {
+    return WriteAll(frameFd, from, size);
+  };
+  // Step 1: the request, whole.
+  ImportRequest request;
+  WireReader reader([&](void* to, size_t size) { return ReadAll(requestFd, to, size); },
+                    UINT64_MAX);
+  try {
+    if (!ReadRequest(reader, request)) return 1;
+  } catch (const std::bad_alloc&) {
+    return WriteResultFrame(ModuleStatus::kOutOfMemory, "", LoadError{}, sink) ? 0 : 1;
+  }
+  // Step 2: the import, its progress sent in steps of a hundredth.
+  LoadOptions options;
+  options.memoryBudgetBytes = request.memoryBudgetBytes;
+  double lastShare = -1.0;
+  bool framesOk = true;
+  options.progress = [&](double share) {
+    if (share < lastShare + 0.01 && !(share == 1.0 && lastShare < 1.0)) return;
+    lastShare = share;
+    framesOk = framesOk && WriteProgressFrame(share, sink);
+  };
+  ModuleStatus status = ModuleStatus::kDone;
+  std::string exceptionText;
+  Loaded<Mesh> result = LoadError{request.source.displayName, 0, 0, "the importer gave no result"};
+  if (request.stamp != ModuleBuildStamp()) {
+    result = LoadError{request.source.displayName, 0, 0,
+                       "the import helper is from another build of termshade; reinstall termshade"};
+  } else {
+    try {
+      result = ImportWithAssimp(request.source, std::move(request.bytes), options);
+    } catch (const std::bad_alloc&) {
+      status = ModuleStatus::kOutOfMemory;
+    } catch (const std::exception& e) {
+      status = ModuleStatus::kException;
+      exceptionText = e.what();
+    }
+  }
+  // Step 3: the result.
+  return framesOk && WriteResultFrame(status, exceptionText, result, sink) ? 0 : 1;
+}
+
+}  // namespace termshade
