@@ -215,6 +215,14 @@ TEST(ImportWire, MeshesThatNoLoaderMakesAreNamed) {
   Mesh order = mesh;
   order.faceStarts = {0, 3, 1, 3};
   EXPECT_EQ(MeshWireProblem(order), "face starts out of order");
+  Mesh none = mesh;
+  none.faceCorners.clear();
+  none.edgeHidden.clear();
+  none.faceStarts = {0};
+  EXPECT_EQ(MeshWireProblem(none), "no face");
+  Mesh two = mesh;
+  two.faceStarts = {0, 2, 3};
+  EXPECT_EQ(MeshWireProblem(two), "a face of fewer than 3 corners");
   Mesh line = mesh;
   line.segments = {{0, 7}};
   EXPECT_EQ(MeshWireProblem(line), "a line past the vertices");

@@ -141,8 +141,11 @@ std::string MeshWireProblem(const Mesh& mesh) {
   if (starts.empty() || starts.front() != 0 || starts.back() != mesh.faceCorners.size()) {
     return "face starts that do not cover the corners";
   }
+  if (starts.size() < 2) return "no face";
+  if (vertexCount >= (uint64_t{1} << 32)) return "more vertices than corners can name";
   for (size_t face = 1; face < starts.size(); ++face) {
     if (starts[face] < starts[face - 1]) return "face starts out of order";
+    if (starts[face] - starts[face - 1] < 3) return "a face of fewer than 3 corners";
   }
   for (const uint32_t corner : mesh.faceCorners) {
     if (corner >= vertexCount) return "a corner past the vertices";

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -64,14 +65,21 @@ class WireReader {
   bool F64(double& value) { return Bytes(&value, sizeof value); }
   /// A string of at most maxBytes.
   bool String(std::string& value, uint64_t maxBytes);
-  /// A count, then that many trivially copyable elements.
+  /// A count, then that many trivially copyable elements; the array grows
+  /// as its bytes arrive (a count alone commits no memory).
   template <typename T>
   bool Array(std::vector<T>& values) {
     uint64_t count = 0;
     if (!U64(count) || count > bytesLeft_ / sizeof(T))
       return Refuse("an array longer than allowed");
-    values.resize(static_cast<size_t>(count));
-    return Bytes(values.data(), values.size() * sizeof(T));
+    constexpr size_t kChunkElements = (size_t{16} << 20) / sizeof(T);
+    values.clear();
+    while (values.size() < count) {
+      const size_t have = values.size();
+      values.resize(have + std::min<size_t>(kChunkElements, static_cast<size_t>(count) - have));
+      if (!Bytes(values.data() + have, (values.size() - have) * sizeof(T))) return false;
+    }
+    return true;
   }
 
   /// Why the last read failed, when the wire itself was wrong (empty when the source stopped).
@@ -95,8 +103,9 @@ bool ReadRequest(WireReader& reader, ImportRequest& request);
 bool ReadResultFrame(WireReader& reader, ModuleStatus& status, std::string& exceptionText,
                      Loaded<Mesh>& result);
 
-/// Why a mesh from the wire could not be one the loader made (indices past
-/// the vertices, face starts out of order, arrays of the wrong length); empty when sound.
+/// Why a mesh from the wire could not be one the importer made (no face, a
+/// face of fewer than 3 corners, indices past the vertices, face starts out
+/// of order, arrays of the wrong length); empty when sound.
 std::string MeshWireProblem(const Mesh& mesh);
 
 }  // namespace termshade

@@ -13,12 +13,15 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <thread>
 
 #include "io/AssimpImport.h"
 #include "io/ImportWire.h"
+#include "io/LoadBudget.h"
 #include "io/OwnFile.h"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): POSIX names it so
@@ -123,11 +126,15 @@ pid_t SpawnHelper(const std::string& path, int requestFd, int frameFd, const Imp
   sigdelset(&all, SIGSTOP);
   posix_spawnattr_setsigmask(&attributes, &none);
   posix_spawnattr_setsigdefault(&attributes, &all);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  // Its own session: no controlling terminal, no Ctrl-C from it, and one
+  // process group to kill with whatever it may start.
+  posix_spawnattr_setflags(&attributes,
+                           POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSID);
   std::string space = std::to_string(limits.addressSpaceBytes);
   std::string seconds = std::to_string(limits.cpuSeconds);
+  std::string parent = std::to_string(getpid());
   std::string program = path;
-  char* argv[] = {program.data(), space.data(), seconds.data(), nullptr};
+  char* argv[] = {program.data(), space.data(), seconds.data(), parent.data(), nullptr};
   pid_t pid = -1;
   const int failed = posix_spawn(&pid, path.c_str(), &actions, &attributes, argv, environ);
   posix_spawnattr_destroy(&attributes);
@@ -145,22 +152,53 @@ struct Ending {
   double cpuSeconds = 0.0;
 };
 
-// Waits for the helper, killing it at once when the load is cancelled, or
-// once `patience` has passed (a helper that gave its result ends at once).
-Ending Reap(pid_t pid, const LoadOptions& options, std::chrono::steady_clock::duration patience) {
-  const auto deadline = std::chrono::steady_clock::now() + patience;
-  Ending ending;
-  rusage usage{};
-  for (;;) {
-    const pid_t done = wait4(pid, &ending.status, WNOHANG, &usage);
-    if (done == pid || (done < 0 && errno != EINTR)) break;
-    if (Cancelled(options) || std::chrono::steady_clock::now() > deadline) kill(pid, SIGKILL);
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+// The running helper: killed (its whole process group) and reaped when
+// left, whatever the way out.
+class HelperProcess {
+ public:
+  explicit HelperProcess(pid_t pid) : pid_(pid) {}
+  HelperProcess(const HelperProcess&) = delete;
+  HelperProcess& operator=(const HelperProcess&) = delete;
+  ~HelperProcess() {
+    if (reaped_) return;
+    Kill();
+    int status = 0;
+    while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
   }
-  const auto seconds = [](timeval t) { return static_cast<double>(t.tv_sec) + t.tv_usec * 1e-6; };
-  ending.cpuSeconds = seconds(usage.ru_utime) + seconds(usage.ru_stime);
-  return ending;
-}
+  void Kill() const {
+    kill(-pid_, SIGKILL);
+    kill(pid_, SIGKILL);
+  }
+  // Waits for its end, killing it at once when the load is cancelled, or
+  // once `patience` has passed (a helper that gave its result ends at once).
+  Ending Reap(const LoadOptions& options, std::chrono::steady_clock::duration patience) {
+    const auto deadline = std::chrono::steady_clock::now() + patience;
+    Ending ending;
+    rusage usage{};
+    // Its end seen without reaping it, so its group is killed while its id is still taken.
+    for (;;) {
+      siginfo_t info{};
+      const int waited = waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT);
+      if ((waited == 0 && info.si_pid == pid_) || (waited < 0 && errno != EINTR)) break;
+      if (Cancelled(options) || std::chrono::steady_clock::now() > deadline) Kill();
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    kill(-pid_, SIGKILL);  // anything it left behind in its group
+    while (wait4(pid_, &ending.status, 0, &usage) < 0 && errno == EINTR) {
+    }
+    reaped_ = true;
+    const auto seconds = [](timeval t) {
+      return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
+    };
+    ending.cpuSeconds = seconds(usage.ru_utime) + seconds(usage.ru_stime);
+    return ending;
+  }
+
+ private:
+  pid_t pid_;
+  bool reaped_ = false;
+};
 
 // Why a helper that gave no result ended.
 std::string EndingMessage(const Ending& ending, const ImportLimits& limits) {
@@ -181,25 +219,46 @@ std::string EndingMessage(const Ending& ending, const ImportLimits& limits) {
          std::to_string(WEXITSTATUS(status)) + ")";
 }
 
-// Reads `size` bytes of frames, waiting at most 20 ms at a time so a cancel is seen at once.
-bool ReadFrames(int fd, void* to, size_t size, const LoadOptions& options, bool& cancelled) {
-  auto* at = static_cast<char*>(to);
-  while (size > 0) {
-    if (Cancelled(options)) {
-      cancelled = true;
-      return false;
+// The helper's frames as the wire reader takes them: waiting at most 20 ms
+// at a time, so a cancel is seen at once, and no longer than the deadline
+// (a helper that blocks uses no processor time, so its limit never comes).
+struct FrameSource {
+  int fd;
+  const LoadOptions& options;
+  std::chrono::steady_clock::time_point deadline;
+  bool cancelled = false;
+  bool timedOut = false;
+
+  bool Read(void* to, size_t size) {
+    auto* at = static_cast<char*>(to);
+    while (size > 0) {
+      if (Cancelled(options)) {
+        cancelled = true;
+        return false;
+      }
+      if (std::chrono::steady_clock::now() > deadline) {
+        timedOut = true;
+        return false;
+      }
+      pollfd ready{fd, POLLIN, 0};
+      const int polled = poll(&ready, 1, 20);
+      if (polled < 0 && errno != EINTR) return false;
+      if (polled <= 0) continue;
+      const ssize_t n = read(fd, at, size);
+      if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+      if (n <= 0) return false;
+      at += n;
+      size -= static_cast<size_t>(n);
     }
-    pollfd ready{fd, POLLIN, 0};
-    const int polled = poll(&ready, 1, 20);
-    if (polled < 0 && errno != EINTR) return false;
-    if (polled <= 0) continue;
-    const ssize_t n = read(fd, at, size);
-    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
-    if (n <= 0) return false;
-    at += n;
-    size -= static_cast<size_t>(n);
+    return true;
   }
-  return true;
+};
+
+// In sanitizer builds a helper that failed (a sanitizer report: its exit
+// status, or a crash) ends this process too, so that tests see it.
+[[noreturn]] void SanitizedHelperFailed(const std::string& what) {
+  std::fprintf(stderr, "termshade: %s\n", SanitizeForTerminal(what).c_str());
+  std::abort();
 }
 
 }  // namespace
@@ -238,16 +297,15 @@ Loaded<Mesh> ImportWithAssimpIsolated(const ImportSource& source, std::string by
   if (!frameRead.MoveHigh() || !frameWrite.MoveHigh()) {
     throw std::runtime_error(std::string("cannot place a pipe: ") + std::strerror(errno));
   }
-  const pid_t pid = SpawnHelper(helper.path, request.Get(), frameWrite.Get(), limits);
+  HelperProcess child(SpawnHelper(helper.path, request.Get(), frameWrite.Get(), limits));
   request.Reset();
   frameWrite.Reset();
-  // Step 3: progress frames, then the result; nothing beyond the budget is taken.
-  bool cancelled = false;
-  WireReader reader(
-      [&](void* to, size_t size) {
-        return ReadFrames(frameRead.Get(), to, size, options, cancelled);
-      },
-      options.memoryBudgetBytes + (uint64_t{1} << 20));
+  // Step 3: progress frames, then the result; nothing beyond the budget is
+  // taken, nothing later than twice the processor limit and 10 s waited for.
+  const auto waitLimit = std::chrono::seconds(2 * limits.cpuSeconds + 10);
+  FrameSource frames{frameRead.Get(), options, std::chrono::steady_clock::now() + waitLimit};
+  WireReader reader([&](void* to, size_t size) { return frames.Read(to, size); },
+                    options.memoryBudgetBytes + (uint64_t{1} << 20));
   bool gotResult = false;
   ModuleStatus status = ModuleStatus::kDone;
   std::string exceptionText;
@@ -263,18 +321,22 @@ Loaded<Mesh> ImportWithAssimpIsolated(const ImportSource& source, std::string by
       break;
     }
   }
-  // Step 4: the helper's end (killed at once when cancelled or when its frames were wrong).
-  if (cancelled || (!gotResult && !reader.Problem().empty())) kill(pid, SIGKILL);
+  // Step 4: the helper's end (killed at once when cancelled, late, or its frames were wrong).
+  if (frames.cancelled || frames.timedOut || (!gotResult && !reader.Problem().empty())) {
+    child.Kill();
+  }
   frameRead.Reset();
   // Without a result the helper is ending or stopped by its limits.
-  const auto patience =
-      gotResult ? std::chrono::seconds(10) : std::chrono::seconds(limits.cpuSeconds + 10);
-  const Ending ending = Reap(pid, options, patience);
-  if (cancelled || Cancelled(options)) return fail("loading cancelled");
+  const Ending ending = child.Reap(options, gotResult ? std::chrono::seconds(10) : waitLimit);
+  if (frames.cancelled || Cancelled(options)) return fail("loading cancelled");
+  if (frames.timedOut) {
+    return fail("the importer gave no result within " + std::to_string(waitLimit.count()) +
+                " s and was stopped");
+  }
   const bool exitedCleanly = WIFEXITED(ending.status) && WEXITSTATUS(ending.status) == 0;
   if (kSanitized && !exitedCleanly && !WIFSIGNALED(ending.status)) {
-    throw std::logic_error("the import helper exited with status " +
-                           std::to_string(WEXITSTATUS(ending.status)) + " (a sanitizer report?)");
+    SanitizedHelperFailed("the import helper exited with status " +
+                          std::to_string(WEXITSTATUS(ending.status)) + " (a sanitizer report?)");
   }
   if (!gotResult) {
     if (!reader.Problem().empty()) {
@@ -282,11 +344,20 @@ Loaded<Mesh> ImportWithAssimpIsolated(const ImportSource& source, std::string by
     }
     if (kSanitized && WIFSIGNALED(ending.status) && WTERMSIG(ending.status) != SIGXCPU &&
         WTERMSIG(ending.status) != SIGKILL) {
-      throw std::logic_error("the import helper crashed: " + EndingMessage(ending, limits));
+      SanitizedHelperFailed("the import helper crashed: " + EndingMessage(ending, limits));
     }
     return fail(EndingMessage(ending, limits));
   }
   RethrowModuleStatus(status, exceptionText);
+  // Step 5: the mesh's size against the budget, as the import checks it in-process.
+  if (result.Ok()) {
+    const Mesh& mesh = result.Value();
+    const auto needed = static_cast<double>(
+        EstimateMeshBytes(mesh.verticesFile.size(), mesh.faceCorners.size(), mesh.FaceCount()));
+    if (needed > static_cast<double>(options.memoryBudgetBytes)) {
+      return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
+    }
+  }
   return result;
 }
 

@@ -39,8 +39,10 @@ if [ "$code" -eq 1 ]; then
   fi
 fi
 # Files opened after the model itself: only inside its folder, besides the
-# program's own Assimp module (opened once a file needs it) and the libraries
-# the dynamic loader opens for it.
+# program's own Assimp module and import helper (opened once a file needs
+# them), the libraries the dynamic loader opens for them, and what the
+# sanitizer runtime reads of its own process (/proc/self/cmdline, environ,
+# maps) as a sanitized helper starts.
 folder=$(cd "$(dirname -- "$file")" && pwd -P)
 if [ -n "${CORPUS_OWN_FILES:-}" ]; then
   cp "$CORPUS_OWN_FILES" "$work/own"
@@ -51,6 +53,7 @@ outside=$(grep -oP 'open(at)?\((AT_FDCWD, )?"\K([^"\\]|\\.)*' "$work/trace" |
   awk -v model="$file" 'started { print } $0 == model { started = 1 }' |
   { mapfile -t opened; [ "${#opened[@]}" -gt 0 ] && realpath -m -- "${opened[@]}"; } |
   grep -vxFf "$work/own" |
+  grep -vxE '/proc/[0-9]+/(cmdline|environ|maps)' |
   awk -v folder="$folder" '$0 != folder && index($0, folder "/") != 1 { print; exit }')
 [ -n "$outside" ] && fail "opened a file outside the model's folder: $outside"
 if [ "$code" -eq 0 ]; then
