@@ -280,6 +280,40 @@ run "clear; bash -c 'trap \"\" INT; $bin $work/big.dat; echo status=\$?'"
 wait_for 'loading .*big\.dat' 5 >/dev/null || fail "no loading message for the first model (Ctrl-C)"
 tm send-keys -t v C-c
 wait_for '^status=130' 3 >/dev/null && pass || fail "Ctrl-C during the first load: status not 130 at once"
+# An import through Assimp runs in the import helper, a child of the viewer:
+# one that hangs (stopped here, so it uses no processor time) is cancelled by
+# Esc at once, and no helper is left behind.
+python3 - "$work/big.off" <<'PY'
+import math, sys
+n = 1000
+out = ["OFF\n%d %d 0\n" % ((n - 1) * n, (n - 2) * n)]
+for i in range(1, n):
+    for j in range(n):
+        t, p = math.pi * i / n, 2 * math.pi * j / n
+        out.append("%.6f %.6f %.6f\n" % (math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t)))
+for i in range(n - 2):
+    for j in range(n):
+        k = (j + 1) % n
+        out.append("4 %d %d %d %d\n" % (i * n + j, i * n + k, (i + 1) * n + k, (i + 1) * n + j))
+open(sys.argv[1], "w").write("".join(out))
+PY
+run "clear; $bin $work/big.off; echo status=\$?"
+pane=$(tm list-panes -t v -F '#{pane_pid}')
+helper=""
+for _ in $(seq 1 $((500 * wait_scale))); do
+  viewer=$(pgrep -P "$pane" | head -n 1)
+  [ -n "$viewer" ] && helper=$(pgrep -P "$viewer" | head -n 1)
+  [ -n "$helper" ] && break
+  sleep 0.01
+done
+if [ -n "$helper" ] && kill -STOP "$helper" 2>/dev/null; then pass; else fail "no import helper seen for big.off"; fi
+wait_for 'loading .*big\.off' 5 >/dev/null && pass || fail "no loading message for big.off"
+tm send-keys -t v Escape
+wait_for 'cancelled loading .*big\.off' 5 >/dev/null && pass || fail "Esc did not cancel a hung Assimp import"
+wait_for '^status=1' 5 >/dev/null && pass || fail "cancelled Assimp import: exit status not 1"
+helper_alive() { [ -n "$helper" ] && [ -e "/proc/$helper" ] && ! grep -q '^[0-9]* ([^)]*) Z' "/proc/$helper/stat" 2>/dev/null; }
+for _ in $(seq 1 $((200 * wait_scale))); do helper_alive || break; sleep 0.01; done
+if helper_alive; then fail "the import helper was left running"; else pass; fi
 # Exact one-sample frames of a big model (--lod off --glyphs ramp): its
 # triangle hierarchy (977k triangles, 500 a sample at 80x24) is built on a
 # worker once the first frame is up, and the frames drawn by walking it are render's (which draws one
