@@ -333,8 +333,7 @@ Loaded<Mesh> ImportWithAssimpIsolated(const ImportSource& source, std::string by
     return fail("the importer gave no result within " + std::to_string(waitLimit.count()) +
                 " s and was stopped");
   }
-  const bool exitedCleanly = WIFEXITED(ending.status) && WEXITSTATUS(ending.status) == 0;
-  if (kSanitized && !exitedCleanly && !WIFSIGNALED(ending.status)) {
+  if (kSanitized && !WIFSIGNALED(ending.status) && WEXITSTATUS(ending.status) != 0) {
     SanitizedHelperFailed("the import helper exited with status " +
                           std::to_string(WEXITSTATUS(ending.status)) + " (a sanitizer report?)");
   }
