@@ -312,12 +312,14 @@ Loaded<Mesh> ImportWithAssimpIsolated(const ImportSource& source, std::string by
   Loaded<Mesh> result = fail("the importer gave no result");
   for (uint8_t kind = 0; !gotResult && reader.U8(kind);) {
     double share = 0.0;
-    if (kind == static_cast<uint8_t>(ImportFrame::kProgress) && reader.F64(share)) {
+    if (kind == static_cast<uint8_t>(ImportFrame::kProgress)) {
+      if (!reader.F64(share)) break;
       if (options.progress && std::isfinite(share)) options.progress(std::clamp(share, 0.0, 1.0));
     } else if (kind == static_cast<uint8_t>(ImportFrame::kResult)) {
       gotResult = ReadResultFrame(reader, status, exceptionText, result);
       break;
     } else {
+      reader.Refuse("a frame of an unknown kind");
       break;
     }
   }

@@ -103,6 +103,26 @@ expect "without the import helper: says where it looked" grep -qF "$work/alone/b
 cp "$(type -P true)" "$work/alone/bin/termshade-import"
 run_alone "$work/cube.off"
 clean_error "another program as the import helper" "the import helper ended without a result" $?
+# A helper gone hostile (what a compromised importer could do): one that
+# crashes, one that sends bytes that are no answer, one that promises an
+# array of 2^60 vertices. Each is a clean error; nothing is allocated for the
+# promise. (Sanitizer builds abort on a crashed helper, so tests see reports.)
+hostile_helper() {  # hostile_helper SCRIPT: the helper replaced by a shell script
+  printf '#!/bin/sh\n%s\n' "$1" >"$work/alone/bin/termshade-import"
+  chmod +x "$work/alone/bin/termshade-import"
+}
+if [ -z "${TERMSHADE_SANITIZED:-}" ]; then
+  hostile_helper 'kill -SEGV $$'
+  run_alone "$work/cube.off"
+  clean_error "a helper that crashes" "the importer (Assimp) crashed on the file (signal 11, SIGSEGV)" $?
+fi
+hostile_helper "printf 'garbage' >&3"
+run_alone "$work/cube.off"
+clean_error "a helper that sends garbage" "the import helper sent a broken result" $?
+# R, status 0, empty text, a mesh: empty name, up axis 0, then 2^60 vertices.
+hostile_helper "printf 'R\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\001\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\020' >&3"
+run_alone "$work/cube.off"
+clean_error "a helper that promises 2^60 vertices" "an array longer than allowed" $?
 cp "$(dirname "$bin")/termshade-import" "$work/alone/bin/termshade-import"
 run_alone "$work/cube.off"
 expect "with the module and the helper: OFF renders (exit $?)" cmp -s "$work/out" "$work/cube.obj.txt"
