@@ -1,8 +1,11 @@
 #include "FrameBench.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <numeric>
+#include <random>
 
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
@@ -30,7 +33,9 @@ struct BenchScene {
   Scene scene;
 };
 
-// Medians per case over a turntable; the cases take turns on each view.
+// Medians per case over a turntable; the cases take turns on each view, in
+// an order shuffled every view (fixed seed), so no case always runs after
+// the same other one (whose caches and branch history it would inherit).
 std::vector<double> MedianMs(const Scene& scene, int width, int height,
                              const std::vector<FrameCase>& cases, int frames) {
   std::vector<Renderer> renderers(cases.size());
@@ -40,10 +45,14 @@ std::vector<double> MedianMs(const Scene& scene, int width, int height,
   depth.Resize(width, height);
   cells.Resize(width, height);
   ViewParams view = DefaultView(scene.diagonalModelUnits);
+  std::vector<size_t> order(cases.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::mt19937 shuffler(20261202);
   for (int frame = 0; frame <= frames; ++frame) {
     view.theta += 0.1;
     const Camera camera = FitCamera(scene, view, width, height, 2.0);
-    for (size_t k = 0; k < cases.size(); ++k) {
+    std::shuffle(order.begin(), order.end(), shuffler);
+    for (const size_t k : order) {
       RenderOptions options;
       options.method = Method::kAuto;
       options.keepDepth = false;  // as the viewer draws
@@ -125,7 +134,7 @@ int RunFrameBench(const FrameBenchOptions& options) {
   }
   std::printf(
       "\nmedians of %d turntable frames (method auto, as the viewer draws); the cases take turns "
-      "on each frame; all threads = %d\n",
+      "on each frame, in an order shuffled each frame; all threads = %d\n",
       options.frames, all);
   return 0;
 }
