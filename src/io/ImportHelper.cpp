@@ -10,47 +10,9 @@
 
 #include "io/AssimpImport.h"
 #include "io/ImportWire.h"
+#include "io/WholeTransfer.h"
 
 namespace termshade {
-namespace {
-
-bool WriteAll(int fd, const void* from, size_t size) {
-  const auto* bytes = static_cast<const char*>(from);
-  size_t done = 0;
-  while (done < size) {
-    const ssize_t n = write(fd, bytes + done, size - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<size_t>(n);
-  }
-  return true;
-}
-
-bool ReadAll(int fd, void* to, size_t size) {
-  auto* at = static_cast<char*>(to);
-  while (size > 0) {
-    const ssize_t n = read(fd, at, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    at += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-
-}  // namespace
 
 void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t cpuSeconds) {
   const rlimit noCore{0, 0};
@@ -59,7 +21,7 @@ void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t cpuSeconds) {
     const rlimit cpu{cpuSeconds, cpuSeconds + 1};
     setrlimit(RLIMIT_CPU, &cpu);
   }
-  if (addressSpaceBytes > 0 && !kAddressSanitizer) {
+  if (addressSpaceBytes > 0 && !kAddressSanitizerBuild) {
     const rlimit space{addressSpaceBytes, addressSpaceBytes};
     setrlimit(RLIMIT_AS, &space);
   }
@@ -67,11 +29,11 @@ void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t cpuSeconds) {
 
 int ServeImportRequest(int requestFd, int frameFd) {
   const WireSink sink = [&](const void* from, size_t size) {
-    return WriteAll(frameFd, from, size);
+    return WriteWhole(frameFd, from, size);
   };
   // Step 1: the request, whole.
   ImportRequest request;
-  WireReader reader([&](void* to, size_t size) { return ReadAll(requestFd, to, size); },
+  WireReader reader([&](void* to, size_t size) { return ReadWhole(requestFd, to, size); },
                     UINT64_MAX);
   try {
     if (!ReadRequest(reader, request)) return 1;

@@ -23,23 +23,14 @@
 #include "io/ImportWire.h"
 #include "io/LoadBudget.h"
 #include "io/OwnFile.h"
+#include "io/WholeTransfer.h"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): POSIX names it so
 
 namespace termshade {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+constexpr bool kSanitized = kAddressSanitizerBuild;
 
 // Owns a file descriptor.
 class Descriptor {
@@ -67,18 +58,6 @@ class Descriptor {
   int fd_;
 };
 
-bool WriteAll(int fd, const void* from, size_t size) {
-  const auto* bytes = static_cast<const char*>(from);
-  while (size > 0) {
-    const ssize_t n = write(fd, bytes, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    bytes += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
-
 bool Cancelled(const LoadOptions& options) {
   return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed);
 }
@@ -96,7 +75,7 @@ Descriptor RequestFile(const ImportSource& source, std::string bytes, const Load
   request.memoryBudgetBytes = options.memoryBudgetBytes;
   request.bytes = std::move(bytes);
   const WireSink sink = [&](const void* from, size_t size) {
-    return WriteAll(file.Get(), from, size);
+    return WriteWhole(file.Get(), from, size);
   };
   const bool written =
       WriteRequestHead(request, sink) && sink(request.bytes.data(), request.bytes.size());
