@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -91,7 +92,26 @@ TEST(IsolatedImport, ALoopingImporterIsStoppedByItsProcessorLimit) {
   ASSERT_FALSE(mesh.Ok());
   EXPECT_EQ(mesh.Error().ToString(),
             "loop.ply: the importer was stopped after 1 s of processor time without finishing "
-            "the file (Assimp may loop on it)");
+            "the file (Assimp may loop on it; TERMSHADE_IMPORT_SECONDS sets the limit)");
+}
+
+TEST(IsolatedImport, TheProcessorLimitComesFromTheEnvironment) {
+  const char* saved = std::getenv("TERMSHADE_IMPORT_SECONDS");
+  const std::string kept = saved != nullptr ? saved : "";
+  const std::pair<const char*, uint32_t> cases[] = {
+      {"5", 5}, {"86400", 86400}, {"86401", 0}, {"0", 0}, {"-3", 0}, {"7s", 0}, {"", 0}};
+  for (const auto& [text, seconds] : cases) {
+    setenv("TERMSHADE_IMPORT_SECONDS", text, 1);
+    EXPECT_EQ(DefaultImportCpuSeconds(), seconds) << text;
+    EXPECT_EQ(LoadOptions{}.importCpuSeconds, seconds) << text;
+  }
+  unsetenv("TERMSHADE_IMPORT_SECONDS");
+  EXPECT_EQ(DefaultImportCpuSeconds(), 0U);
+  LoadOptions options;
+  EXPECT_EQ(ImportLimitsFor(size_t{5} << 20, options).cpuSeconds, 35U);
+  options.importCpuSeconds = 3;
+  EXPECT_EQ(ImportLimitsFor(size_t{5} << 20, options).cpuSeconds, 3U);
+  if (saved != nullptr) setenv("TERMSHADE_IMPORT_SECONDS", kept.c_str(), 1);
 }
 
 TEST(IsolatedImport, ACancelStopsALoopingImporter) {

@@ -26,6 +26,11 @@ constexpr std::array kEnvironment{
           "The locale; the viewer needs a UTF-8 one to show shade characters beyond ASCII "
           "(--ramp). Dumps are always UTF-8."},
     Entry{"HOME", "Where ~ points in the viewer's open prompt."},
+    Entry{"TERMSHADE_MEMORY_BUDGET",
+          "The memory budget when --memory-budget is not given (4G, 512M, bytes; default 2G)."},
+    Entry{"TERMSHADE_IMPORT_SECONDS",
+          "Processor seconds an import through Assimp may take in its helper process (1 to "
+          "86400); default 30 s and 1 s a MiB of the file."},
 };
 
 constexpr std::array kExitStatus{

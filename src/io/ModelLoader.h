@@ -15,6 +15,11 @@ namespace termshade {
 /// "512M", bytes; see ParseByteCount in io/LoadBudget.h) if set and valid, else 2 GiB.
 size_t DefaultMemoryBudgetBytes();
 
+/// The import helper's processor time when none is given:
+/// TERMSHADE_IMPORT_SECONDS (whole seconds, 1 to 86400) if set and valid,
+/// else 0 (30 s and 1 s a MiB of file; io/IsolatedImport.h).
+uint32_t DefaultImportCpuSeconds();
+
 /// Limits and hooks for one load.
 struct LoadOptions {
   /// Most memory the load may take, in bytes; a model needing more is refused
@@ -36,7 +41,7 @@ struct LoadOptions {
   /// (io/IsolatedImport.h): for the fuzzers, whose coverage must see it.
   bool importInProcess = false;
   /// Processor seconds the import helper may take; 0: 30 s and 1 s a MiB of file.
-  uint32_t importCpuSeconds = 0;
+  uint32_t importCpuSeconds = DefaultImportCpuSeconds();
 };
 
 /// Loads a model file: .dat by our own reader (located errors), and the
