@@ -3,18 +3,20 @@
 # (default 60), split between them: the .dat reader and pipeline (dat_fuzzer),
 # the Assimp path of the model loader (model_fuzzer: OBJ, PLY, STL, OFF,
 # glTF, GLB, COLLADA, unnamed content) and our readers against their plain
-# forms (reader_fuzzer), each from a seed corpus of our files.
+# forms (reader_fuzzer), and the import helper's answer as termshade reads it
+# (wire_fuzzer), each from a seed corpus of our files.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
-datSeconds=$((seconds / 3))
-readerSeconds=$((seconds / 3))
-modelSeconds=$((seconds - datSeconds - readerSeconds))
+datSeconds=$((seconds / 4))
+readerSeconds=$((seconds / 4))
+wireSeconds=$((seconds / 4))
+modelSeconds=$((seconds - datSeconds - readerSeconds - wireSeconds))
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir "$work/dat" "$work/model" "$work/reader"
+mkdir "$work/dat" "$work/model" "$work/reader" "$work/wire"
 cp data/*.dat tests/models/good/*.dat tests/models/bad/*.dat "$work/dat"/
 # Model seeds: the first byte picks the format (index into model_fuzzer's kNames).
 seed() {  # seed INDEX FILE
@@ -29,6 +31,26 @@ for f in tests/models/bad/*.glb; do seed 5 "$f"; done
 for f in tests/models/bad/opengex_* tests/models/bad/q3d_*; do seed 7 "$f"; done
 printf '\x02solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n' >"$work/model/ascii.stl"
 printf '\x03OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$work/model/triangle.off"
+# Wire seeds: a progress frame, then a result frame with a tetrahedron (four
+# triangles, one hidden edge, face colours, one line), and one with an error.
+python3 - "$work/wire" <<'PY'
+import struct, sys
+def text(s): return struct.pack("<Q", len(s)) + s
+def array(fmt, items):
+    return struct.pack("<Q", len(items)) + b"".join(struct.pack(fmt, *i) for i in items)
+vertices = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+faces = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+corners = [(c,) for f in faces for c in f]
+mesh = (text(b"seed.off") + b"\x04" + array("<3d", vertices) + array("<I", corners) +
+        array("<I", [(3 * i,) for i in range(5)]) +
+        array("<B", [(1 if i == 1 else 0,) for i in range(12)]) + array("<2I", [(0, 3)]) +
+        array("<3f", [(0.5, 0.25, 1.0)] * 4))
+progress = b"P" + struct.pack("<d", 0.5)
+result = b"R" + struct.pack("<i", 0) + text(b"") + b"\x01" + mesh
+error = b"R" + struct.pack("<i", 0) + text(b"") + b"\x00" + text(b"seed.off") + struct.pack("<ii", 3, 7) + text(b"a message")
+open(sys.argv[1] + "/mesh", "wb").write(progress + result)
+open(sys.argv[1] + "/error", "wb").write(error)
+PY
 run() {  # run FUZZER SECONDS CORPUS
   "./build-fuzz/$1" -artifact_prefix="${ARTIFACTS:-$work/}" -max_total_time="$2" -max_len=4096 \
     -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "$3"
@@ -36,3 +58,4 @@ run() {  # run FUZZER SECONDS CORPUS
 run dat_fuzzer "$datSeconds" "$work/dat"
 run model_fuzzer "$modelSeconds" "$work/model"
 run reader_fuzzer "$readerSeconds" "$work/reader"
+run wire_fuzzer "$wireSeconds" "$work/wire"
