@@ -299,11 +299,18 @@ open(sys.argv[1], "w").write("".join(out))
 PY
 run "clear; $bin $work/big.off; echo status=\$?"
 pane=$(tm list-panes -t v -F '#{pane_pid}')
+# Stopped once it reads its request: past exec and its start (where it asks
+# to die with the viewer), as a helper hung inside Assimp would be.
 helper=""
+reading_request() { [ "$(awk '/^pos:/ { print $2 }' "/proc/$1/fdinfo/0" 2>/dev/null)" -gt 0 ] 2>/dev/null; }
 for _ in $(seq 1 $((500 * wait_scale))); do
   viewer=$(pgrep -P "$pane" | head -n 1)
-  [ -n "$viewer" ] && helper=$(pgrep -P "$viewer" | head -n 1)
-  [ -n "$helper" ] && break
+  candidate=""
+  [ -n "$viewer" ] && candidate=$(pgrep -P "$viewer" | head -n 1)
+  if [ -n "$candidate" ] && reading_request "$candidate"; then
+    helper=$candidate
+    break
+  fi
   sleep 0.01
 done
 if [ -n "$helper" ] && kill -STOP "$helper" 2>/dev/null; then pass; else fail "no import helper seen for big.off"; fi
