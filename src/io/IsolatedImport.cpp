@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "io/AssimpImport.h"
+#include "io/FileDescriptor.h"
 #include "io/ImportWire.h"
 #include "io/LoadBudget.h"
 #include "io/OwnFile.h"
@@ -32,40 +33,23 @@ namespace {
 
 constexpr bool kSanitized = kAddressSanitizerBuild;
 
-// Owns a file descriptor.
-class Descriptor {
- public:
-  explicit Descriptor(int fd = -1) : fd_(fd) {}
-  Descriptor(const Descriptor&) = delete;
-  Descriptor& operator=(const Descriptor&) = delete;
-  Descriptor(Descriptor&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
-  Descriptor& operator=(Descriptor&&) = delete;
-  ~Descriptor() { Reset(); }
-  int Get() const { return fd_; }
-  void Reset(int fd = -1) {
-    if (fd_ >= 0) close(fd_);
-    fd_ = fd;
-  }
-  // Moved to 10 or above (close-on-exec), clear of the child's 0 to 3.
-  bool MoveHigh() {
-    const int high = fcntl(fd_, F_DUPFD_CLOEXEC, 10);
-    if (high < 0) return false;
-    Reset(high);
-    return true;
-  }
-
- private:
-  int fd_;
-};
+// fd moved to 10 or above (close-on-exec), clear of the child's 0 to 3.
+bool MoveHigh(FileDescriptor& fd) {
+  const int high = fcntl(fd.Get(), F_DUPFD_CLOEXEC, 10);
+  if (high < 0) return false;
+  fd.Reset(high);
+  return true;
+}
 
 bool Cancelled(const LoadOptions& options) {
   return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed);
 }
 
 // The request in an anonymous file, read from its start: the helper's standard input.
-Descriptor RequestFile(const ImportSource& source, std::string bytes, const LoadOptions& options) {
-  Descriptor file(memfd_create("termshade-import-request", MFD_CLOEXEC));
-  if (file.Get() < 0 || !file.MoveHigh()) {
+FileDescriptor RequestFile(const ImportSource& source, std::string bytes,
+                           const LoadOptions& options) {
+  FileDescriptor file(memfd_create("termshade-import-request", MFD_CLOEXEC));
+  if (file.Get() < 0 || !MoveHigh(file)) {
     throw std::runtime_error(std::string("cannot make the import request: ") +
                              std::strerror(errno));
   }
@@ -268,13 +252,13 @@ Loaded<Mesh> ImportWithAssimpIsolated(const ImportSource& source, std::string by
   if (helper.path.empty()) return fail(helper.problem);
   // Step 2: the request, the frame pipe and the helper.
   const ImportLimits limits = ImportLimitsFor(bytes.size(), options);
-  Descriptor request = RequestFile(source, std::move(bytes), options);
+  FileDescriptor request = RequestFile(source, std::move(bytes), options);
   int ends[2] = {-1, -1};
   if (pipe2(ends, O_CLOEXEC) != 0) {
     throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
   }
-  Descriptor frameRead(ends[0]), frameWrite(ends[1]);
-  if (!frameRead.MoveHigh() || !frameWrite.MoveHigh()) {
+  FileDescriptor frameRead(ends[0]), frameWrite(ends[1]);
+  if (!MoveHigh(frameRead) || !MoveHigh(frameWrite)) {
     throw std::runtime_error(std::string("cannot place a pipe: ") + std::strerror(errno));
   }
   HelperProcess child(SpawnHelper(helper.path, request.Get(), frameWrite.Get(), limits));

@@ -10,24 +10,10 @@
 #include <cstring>
 
 #include "geometry/HugePages.h"
+#include "io/FileDescriptor.h"
 
 namespace termshade {
 namespace {
-
-// Closes the descriptor when the read is over, whichever way it ends.
-class FileDescriptor {
- public:
-  explicit FileDescriptor(int fd) : fd_(fd) {}
-  FileDescriptor(const FileDescriptor&) = delete;
-  FileDescriptor& operator=(const FileDescriptor&) = delete;
-  ~FileDescriptor() {
-    if (fd_ >= 0) close(fd_);
-  }
-  int Get() const { return fd_; }
-
- private:
-  int fd_;
-};
 
 std::string KindOf(mode_t mode) {
   if (S_ISDIR(mode)) return "a folder";
@@ -85,7 +71,8 @@ Loaded<std::string> ReadRegularFile(
     const std::atomic<bool>* cancel) {
   // Step 1: open without blocking (a FIFO would wait for a writer) and look at what it is.
   const FileDescriptor fd(open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY));
-  if (fd.Get() < 0) return LoadError{path, 0, 0, std::string("cannot open: ") + std::strerror(errno)};
+  if (fd.Get() < 0)
+    return LoadError{path, 0, 0, std::string("cannot open: ") + std::strerror(errno)};
   struct stat info {};
   if (fstat(fd.Get(), &info) != 0) {
     return LoadError{path, 0, 0, std::string("cannot read: ") + std::strerror(errno)};
