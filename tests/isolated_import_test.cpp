@@ -92,7 +92,8 @@ TEST(IsolatedImport, ALoopingImporterIsStoppedByItsProcessorLimit) {
   ASSERT_FALSE(mesh.Ok());
   EXPECT_EQ(mesh.Error().ToString(),
             "loop.ply: the importer was stopped after 1 s of processor time without finishing "
-            "the file (Assimp may loop on it; TERMSHADE_IMPORT_SECONDS sets the limit)");
+            "the file (Assimp may loop on it; --import-seconds or TERMSHADE_IMPORT_SECONDS sets "
+            "the limit)");
 }
 
 TEST(IsolatedImport, TheProcessorLimitComesFromTheEnvironment) {

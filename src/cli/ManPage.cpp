@@ -29,8 +29,8 @@ constexpr std::array kEnvironment{
     Entry{"TERMSHADE_MEMORY_BUDGET",
           "The memory budget when --memory-budget is not given (4G, 512M, bytes; default 2G)."},
     Entry{"TERMSHADE_IMPORT_SECONDS",
-          "Processor seconds an import through Assimp may take in its helper process (1 to "
-          "86400); default 30 s and 1 s a MiB of the file."},
+          "Processor seconds an import through Assimp may take in its helper process when "
+          "--import-seconds is not given (1 to 86400); default 30 s and 1 s a MiB of the file."},
 };
 
 constexpr std::array kExitStatus{

@@ -176,10 +176,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   sink.cells.Resize(widthCells, heightCells);
   sink.centerDepth.Resize(widthCells, heightCells);
   sink.centerCells.Resize(widthCells, heightCells);
-  LoadOptions loadOptions;
+  LoadOptions loadOptions(options.loadLimits);
   loadOptions.formatHint = options.inputFormat;
   loadOptions.importerOnly = options.reader == "assimp";
-  if (options.memoryBudgetBytes > 0) loadOptions.memoryBudgetBytes = options.memoryBudgetBytes;
   int exitCode = 0;
   for (const std::string& modelPath : options.modelPaths) {
     Loaded<Mesh> mesh = LoadModelFile(modelPath, loadOptions);

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/UpAxis.h"
-
+#include "io/ModelLoader.h"
 #include "raster/RenderOptions.h"
 
 namespace termshade {
@@ -29,14 +29,14 @@ struct RenderCommandOptions {
   int frames = 1;
   double stepRadians = 0.1;
   bool noCull = false;
-  int threads = 0;  ///< --threads: frame threads, 0 every core
-  std::string inputFormat;       ///< --input-format: extension for content that cannot be sniffed
-  size_t memoryBudgetBytes = 0;  ///< --memory-budget; 0: DefaultMemoryBudgetBytes()
-  std::string reader = "auto";   ///< --reader auto|assimp
+  int threads = 0;              ///< --threads: frame threads, 0 every core
+  std::string inputFormat;      ///< --input-format: extension for content that cannot be sniffed
+  LoadLimits loadLimits;        ///< --memory-budget, --import-seconds
+  std::string reader = "auto";  ///< --reader auto|assimp
   /// --color: none, 256, truecolor or auto; empty: the command's default
   /// (render: 256, so dumps do not depend on the environment; viewer: auto).
   std::string colour;
-  bool mono = false;  ///< --mono: --color none
+  bool mono = false;             ///< --mono: --color none
   std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
   /// --lod auto|off; empty: the command's default (render: off, exact dumps; viewer: auto).
   std::string lod;

@@ -127,7 +127,8 @@ void AddUpOption(CLI::App& command, std::optional<termshade::UpAxis>& upAxis) {
       ->type_name("AXIS");
 }
 
-void AddMemoryBudgetOption(CLI::App& command, size_t& budgetBytes) {
+void AddLoadLimitOptions(CLI::App& command, termshade::LoadLimits& limits) {
+  size_t& budgetBytes = limits.memoryBudgetBytes;
   command
       .add_option_function<std::string>(
           "--memory-budget",
@@ -142,6 +143,12 @@ void AddMemoryBudgetOption(CLI::App& command, size_t& budgetBytes) {
           "most memory loading may take, e.g. 4G or 512M (default: TERMSHADE_MEMORY_BUDGET, "
           "else 2G); a model needing more is refused")
       ->type_name("SIZE");
+  command
+      .add_option("--import-seconds", limits.importCpuSeconds,
+                  "processor seconds the import helper (Assimp) may take on a file (default: "
+                  "TERMSHADE_IMPORT_SECONDS, else 30 s and 1 s a MiB)")
+      ->check(CLI::Range(1, 86400))
+      ->type_name("SECONDS");
 }
 
 void AddViewOptions(CLI::App& command, RenderCommandOptions& options) {
@@ -212,7 +219,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.render.threads = look.threads;
   if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   viewer.upAxis = look.upAxis;
-  viewer.memoryBudgetBytes = look.memoryBudgetBytes;
+  viewer.loadLimits = look.loadLimits;
   viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
   viewer.theta = look.theta;
   viewer.phi = look.phi;
@@ -241,7 +248,7 @@ int Run(int argc, char** argv) {
       ->check(termshade::FiniteIn(0.25, 8.0));
   AddLookOptions(app, viewerLook);
   AddUpOption(app, viewerLook.upAxis);
-  AddMemoryBudgetOption(app, viewerLook.memoryBudgetBytes);
+  AddLoadLimitOptions(app, viewerLook.loadLimits);
   AddAngleOption(app, "--theta", viewerLook.theta, "starting eye azimuth, radians or Ndeg (0.3)");
   AddAngleOption(app, "--phi", viewerLook.phi, "starting eye polar angle, radians or Ndeg (1.3)");
 
@@ -269,7 +276,7 @@ int Run(int argc, char** argv) {
                    "the model's format as an extension (stl, obj, ...) where the name and "
                    "content cannot tell it (standard input)")
       ->type_name("EXT");
-  AddMemoryBudgetOption(*renderCommand, render.memoryBudgetBytes);
+  AddLoadLimitOptions(*renderCommand, render.loadLimits);
 
   renderCommand
       ->add_option("--reader", render.reader,

@@ -175,7 +175,7 @@ std::string EndingMessage(const Ending& ending, const ImportLimits& limits) {
         (signal == SIGKILL && ending.cpuSeconds >= static_cast<double>(limits.cpuSeconds))) {
       return "the importer was stopped after " + std::to_string(limits.cpuSeconds) +
              " s of processor time without finishing the file (Assimp may loop on it; "
-             "TERMSHADE_IMPORT_SECONDS sets the limit)";
+             "--import-seconds or TERMSHADE_IMPORT_SECONDS sets the limit)";
     }
     return "the importer (Assimp) crashed on the file (" + which + "); nothing of it was used";
   }

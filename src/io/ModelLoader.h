@@ -20,8 +20,21 @@ size_t DefaultMemoryBudgetBytes();
 /// else 0 (30 s and 1 s a MiB of file; io/IsolatedImport.h).
 uint32_t DefaultImportCpuSeconds();
 
+/// What a user sets for loads (--memory-budget, --import-seconds); 0: the default.
+struct LoadLimits {
+  size_t memoryBudgetBytes = 0;   ///< 0: DefaultMemoryBudgetBytes()
+  uint32_t importCpuSeconds = 0;  ///< 0: DefaultImportCpuSeconds()
+};
+
 /// Limits and hooks for one load.
 struct LoadOptions {
+  LoadOptions() = default;
+  /// The defaults, with what `limits` sets in their place.
+  explicit LoadOptions(const LoadLimits& limits) {
+    if (limits.memoryBudgetBytes > 0) memoryBudgetBytes = limits.memoryBudgetBytes;
+    if (limits.importCpuSeconds > 0) importCpuSeconds = limits.importCpuSeconds;
+  }
+
   /// Most memory the load may take, in bytes; a model needing more is refused
   /// with a message saying how much it needs. Checked before allocating: the
   /// file's size times what its format's import takes per byte, header counts

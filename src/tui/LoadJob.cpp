@@ -1,16 +1,20 @@
 #include "tui/LoadJob.h"
 
+#include <poll.h>
+
+#include <chrono>
+
 #include "geometry/HeapPolicy.h"
 #include "io/ModelLoader.h"
 #include "tui/ViewerState.h"
 
 namespace termshade {
 
-LoadJob::LoadJob(std::string path, std::optional<UpAxis> upAxis, size_t memoryBudgetBytes)
+LoadJob::LoadJob(std::string path, std::optional<UpAxis> upAxis, LoadLimits limits)
     : path_(std::move(path)), shared_(std::make_shared<Shared>()) {
   // The worker holds its own reference to the shared state (see ~LoadJob).
-  worker_ = StartWorkerThread([shared = shared_, path = path_, upAxis, memoryBudgetBytes] {
-    Load(*shared, path, upAxis, memoryBudgetBytes);
+  worker_ = StartWorkerThread([shared = shared_, path = path_, upAxis, limits] {
+    Load(*shared, path, upAxis, limits);
     Finish(*shared);
   });
 }
@@ -27,9 +31,8 @@ LoadJob::LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis up
 }
 
 void LoadJob::Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis,
-                   size_t memoryBudgetBytes) {
-  LoadOptions options;
-  if (memoryBudgetBytes > 0) options.memoryBudgetBytes = memoryBudgetBytes;
+                   LoadLimits limits) {
+  LoadOptions options(limits);
   options.cancel = &shared.cancel;
   options.progress = [&shared](double share) { shared.progress.store(share); };
   Loaded<Mesh> mesh = LoadViewerMesh(path, options);
@@ -60,12 +63,24 @@ Loaded<Scene> LoadJob::Take() {
   return result;
 }
 
-LoadJob::~LoadJob() {
-  if (!worker_.joinable()) return;
+bool LoadJob::Stop() {
   // Cancel before looking at finished, as Finish sets finished before looking at cancel:
   // one of the two sees the other's store, so an abandoned worker always returns its memory.
   Cancel();
-  if (Finished()) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(kStopWaitMs);
+  while (!Finished()) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) break;
+    pollfd ready{ReadyFd(), POLLIN, 0};
+    poll(&ready, 1, static_cast<int>(left.count()));
+  }
+  return Finished();
+}
+
+LoadJob::~LoadJob() {
+  if (!worker_.joinable()) return;
+  if (Stop()) {
     worker_.join();
   } else {
     worker_.detach();  // it holds its own reference to the shared state

@@ -9,6 +9,7 @@
 #include "geometry/Scene.h"
 #include "geometry/UpAxis.h"
 #include "io/LoadError.h"
+#include "io/ModelLoader.h"
 #include "tui/WorkerThread.h"
 
 namespace termshade {
@@ -20,13 +21,14 @@ namespace termshade {
 /// other descriptors.
 class LoadJob {
  public:
-  /// upAxis: the viewer's --up, else each file's own (SPEC 10); memoryBudgetBytes:
-  /// the most the load may take (0: DefaultMemoryBudgetBytes()).
-  LoadJob(std::string path, std::optional<UpAxis> upAxis, size_t memoryBudgetBytes = 0);
+  /// upAxis: the viewer's --up, else each file's own (SPEC 10); limits: the
+  /// most memory and import time the load may take.
+  LoadJob(std::string path, std::optional<UpAxis> upAxis, LoadLimits limits = {});
   /// The scene's model prepared again, turned so that `upAxis` is up.
   LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis upAxis);
-  /// Joins a finished worker; asks an unfinished one to stop and lets it end
-  /// on its own (see Abandoned).
+  /// Joins a finished worker; stops an unfinished one (Stop) and, if it runs
+  /// on, lets it end on its own (the process should then not run static
+  /// destructors under it: leave with _Exit).
   ~LoadJob();
   LoadJob(const LoadJob&) = delete;
   LoadJob& operator=(const LoadJob&) = delete;
@@ -41,11 +43,13 @@ class LoadJob {
   bool Preparing() const { return shared_->preparing.load(); }
   /// Asks the loader to stop (it polls the flag); returns at once.
   void Cancel() { shared_->cancel.store(true); }
+  /// Cancel, then waits up to kStopWaitMs for the worker to end: a load in
+  /// the import helper does (the helper killed and reaped); preparing the
+  /// scene does not poll the flag. True when it has ended (then Take may join it).
+  bool Stop();
+  static constexpr int kStopWaitMs = 150;
   /// The result, once Finished(); joins the worker.
   Loaded<Scene> Take();
-  /// True when the worker is still running: the process should not run
-  /// static destructors under it (leave with _Exit).
-  bool Abandoned() const { return !Finished(); }
 
  private:
   struct Shared {
@@ -57,7 +61,7 @@ class LoadJob {
     ReadyPipe ready;
   };
   static void Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis,
-                   size_t memoryBudgetBytes);
+                   LoadLimits limits);
   static void Finish(Shared& shared);
 
   std::string path_;

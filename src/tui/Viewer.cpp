@@ -139,8 +139,8 @@ class EventLoop {
         nextTurntableFrame = std::max(nextTurntableFrame + kTurntablePeriod, Clock::now());
       }
     }
-    // A worker still reading a file is asked to stop and left to end alone.
-    outcome.abandonedLoad = abandonedLoad_ || (job_ && job_->Abandoned()) ||
+    // A worker still loading is asked to stop, and left to end alone if it runs on.
+    outcome.abandonedLoad = abandonedLoad_ || (job_ && !job_->Stop()) ||
                             (detailJob_ && !detailJob_->Finished()) ||
                             (hierarchyJob_ && !hierarchyJob_->Finished());
     if (cancelledStart_) outcome.cancelledStart = cancelledName_;
@@ -160,8 +160,7 @@ class EventLoop {
     if (jobRequest_.turnTo) {
       job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.SharedScene(), *jobRequest_.turnTo);
     } else {
-      job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.UpAxisOverride(),
-                                       state_.MemoryBudgetBytes());
+      job_ = std::make_unique<LoadJob>(jobRequest_.path, state_.UpAxisOverride(), state_.Limits());
     }
     shownLoadingText_.clear();
     dirty_ = true;
@@ -222,8 +221,8 @@ class EventLoop {
   void CancelLoad() {
     const std::string name = LoadName();
     cancelledName_ = name;
-    abandonedLoad_ = abandonedLoad_ || job_->Abandoned();
-    job_.reset();  // asks the loader to stop; its result, if any, is dropped
+    abandonedLoad_ = abandonedLoad_ || !job_->Stop();
+    job_.reset();  // its result, if any, is dropped
     ReturnFreedMemory();
     state_.SetMessage("cancelled loading " + name);
     dirty_ = true;

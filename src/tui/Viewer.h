@@ -6,6 +6,7 @@
 
 #include "geometry/LevelOfDetail.h"
 #include "geometry/UpAxis.h"
+#include "io/ModelLoader.h"
 #include "raster/RenderOptions.h"
 #include "shade/ColourMode.h"
 
@@ -22,8 +23,8 @@ struct ViewerOptions {
   std::optional<UpAxis> upAxis;     ///< unset: each file's own (SPEC 10)
   /// auto: levels of detail built on a worker after a big model's first frame.
   DetailMode detail = DetailMode::kAuto;
-  size_t memoryBudgetBytes = 0;  ///< --memory-budget; 0: DefaultMemoryBudgetBytes()
-  double theta = 0.3;            ///< the view `r` returns to, radians (SPEC 2)
+  LoadLimits loadLimits;  ///< --memory-budget, --import-seconds
+  double theta = 0.3;     ///< the view `r` returns to, radians (SPEC 2)
   double phi = 1.3;
 };
 

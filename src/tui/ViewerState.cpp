@@ -46,7 +46,7 @@ ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
                       : options.colour),
       colourOn_(options.colour != ColourMode::kNone && options.colour != ColourMode::kAuto),
       upAxis_(options.upAxis),
-      memoryBudgetBytes_(options.memoryBudgetBytes),
+      loadLimits_(options.loadLimits),
       startTheta_(options.theta),
       startPhi_(options.phi) {
   render_.keepDepth = false;  // the screen shows glyphs only

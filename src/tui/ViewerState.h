@@ -90,8 +90,8 @@ class ViewerState {
   size_t ModelCount() const { return paths_.size(); }
   /// The viewer's --up for models it loads; unset: each file's own.
   std::optional<UpAxis> UpAxisOverride() const { return upAxis_; }
-  /// The most memory a load may take, bytes; 0: DefaultMemoryBudgetBytes().
-  size_t MemoryBudgetBytes() const { return memoryBudgetBytes_; }
+  /// The most memory and import time a load may take.
+  const LoadLimits& Limits() const { return loadLimits_; }
   /// The colour mode cells are drawn in now (kNone after `c` turned it off).
   ColourMode Colour() const { return colourOn_ ? colourMode_ : ColourMode::kNone; }
   /// The glyph mode, and whether the terminal's locale can show the modes beyond ASCII.
@@ -138,7 +138,7 @@ class ViewerState {
   bool colourOn_ = true;
   bool utf8_ = true;
   std::optional<UpAxis> upAxis_;
-  size_t memoryBudgetBytes_ = 0;
+  LoadLimits loadLimits_;
   double startTheta_ = 0.3;
   double startPhi_ = 1.3;
   bool lightMode_ = false;

@@ -123,6 +123,21 @@ clean_error "a helper that sends garbage" "the import helper sent a broken resul
 hostile_helper "printf 'R\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\001\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\020' >&3"
 run_alone "$work/cube.off"
 clean_error "a helper that promises 2^60 vertices" "an array longer than allowed" $?
+# The processor limit the helper is given (its second argument):
+# --import-seconds, else TERMSHADE_IMPORT_SECONDS, else 30 s and 1 s a MiB.
+hostile_helper "echo \"\$2\" >'$work/cpu-seconds'"
+limit_given() {  # limit_given [ENV=VALUE] [OPTION...]: the limit the helper saw
+  rm -f "$work/cpu-seconds"
+  env "$@" >/dev/null 2>&1 </dev/null
+  cat "$work/cpu-seconds" 2>/dev/null
+}
+expect "--import-seconds 7 reaches the helper" test "$(limit_given TERMSHADE_IMPORT_SECONDS=9 "$work/alone/bin/termshade" render "$work/cube.off" --import-seconds 7)" = 7
+expect "TERMSHADE_IMPORT_SECONDS=9 reaches the helper" test "$(limit_given TERMSHADE_IMPORT_SECONDS=9 "$work/alone/bin/termshade" render "$work/cube.off")" = 9
+expect "the default limit: 30 s for a small file" test "$(limit_given -u TERMSHADE_IMPORT_SECONDS "$work/alone/bin/termshade" render "$work/cube.off")" = 30
+"$work/alone/bin/termshade" render "$work/cube.off" --import-seconds 0 >/dev/null 2>"$work/err" </dev/null
+code=$?
+expect "--import-seconds 0: a usage error (exit $code)" test "$code" -eq 2
+expect "--import-seconds 0: names the option" grep -qF -- "--import-seconds" "$work/err"
 cp "$(dirname "$bin")/termshade-import" "$work/alone/bin/termshade-import"
 run_alone "$work/cube.off"
 expect "with the module and the helper: OFF renders (exit $?)" cmp -s "$work/out" "$work/cube.obj.txt"

@@ -299,19 +299,20 @@ open(sys.argv[1], "w").write("".join(out))
 PY
 run "clear; $bin $work/big.off; echo status=\$?"
 pane=$(tm list-panes -t v -F '#{pane_pid}')
-# Stopped once it reads its request: past exec and its start (where it asks
-# to die with the viewer), as a helper hung inside Assimp would be.
+# Stopped as soon as it runs the helper's program (often before it asks to
+# die with the viewer), as a helper hung inside Assimp would be: the viewer,
+# leaving, stops its load and the load kills and reaps the helper.
 helper=""
-reading_request() { [ "$(awk '/^pos:/ { print $2 }' "/proc/$1/fdinfo/0" 2>/dev/null)" -gt 0 ] 2>/dev/null; }
-for _ in $(seq 1 $((500 * wait_scale))); do
+runs_helper() { case "$(readlink "/proc/$1/exe" 2>/dev/null)" in */termshade-import) return 0 ;; esac; return 1; }
+for _ in $(seq 1 $((2000 * wait_scale))); do
   viewer=$(pgrep -P "$pane" | head -n 1)
   candidate=""
   [ -n "$viewer" ] && candidate=$(pgrep -P "$viewer" | head -n 1)
-  if [ -n "$candidate" ] && reading_request "$candidate"; then
+  if [ -n "$candidate" ] && runs_helper "$candidate"; then
     helper=$candidate
     break
   fi
-  sleep 0.01
+  sleep 0.002
 done
 if [ -n "$helper" ] && kill -STOP "$helper" 2>/dev/null; then pass; else fail "no import helper seen for big.off"; fi
 wait_for 'loading .*big\.off' 5 >/dev/null && pass || fail "no loading message for big.off"
