@@ -15,9 +15,11 @@ class FaceCorners {
  public:
   explicit FaceCorners(std::span<const uint32_t> stored) : stored_(stored) {}
   explicit FaceCorners(std::array<uint32_t, 3> triangle) : triangle_(triangle), implicit_(true) {}
+  // NOLINTBEGIN(readability-identifier-naming): a range, as range-for and std::size name it
   size_t size() const { return implicit_ ? 3 : stored_.size(); }
   const uint32_t* begin() const { return implicit_ ? triangle_.data() : stored_.data(); }
   const uint32_t* end() const { return begin() + size(); }
+  // NOLINTEND(readability-identifier-naming)
   uint32_t operator[](size_t i) const { return begin()[i]; }
 
  private:
