@@ -2,6 +2,8 @@
 // this process, an importer that loops stopped by its processor limit or at
 // once by a cancel, one that asks for too much memory refused, and the wire
 // between them checked (io/ImportWire.h).
+#include <signal.h>
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -94,6 +96,22 @@ TEST(IsolatedImport, ALoopingImporterIsStoppedByItsProcessorLimit) {
             "loop.ply: the importer was stopped after 1 s of processor time without finishing "
             "the file (Assimp may loop on it; --import-seconds or TERMSHADE_IMPORT_SECONDS sets "
             "the limit)");
+}
+
+TEST(IsolatedImport, AnEndNobodyCouldReadIsSaidSoNotGuessed) {
+  // SIGCHLD ignored: the kernel reaps the helper, and its status is lost.
+  struct sigaction ignore {
+  }, saved{};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGCHLD, &ignore, &saved);
+  LoadOptions options;
+  options.importCpuSeconds = 1;
+  Loaded<Mesh> mesh = ImportWithAssimpIsolated(Unnamed("loop.ply", "ply"), kLoopingPly, options);
+  sigaction(SIGCHLD, &saved, nullptr);
+  ASSERT_FALSE(mesh.Ok());
+  EXPECT_EQ(mesh.Error().ToString(),
+            "loop.ply: the import helper ended without a result; how it ended could not be read "
+            "(does this process ignore SIGCHLD?)");
 }
 
 TEST(IsolatedImport, TheProcessorLimitComesFromTheEnvironment) {

@@ -3,6 +3,7 @@
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <exception>
 #include <iostream>
@@ -449,6 +450,9 @@ int Run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // An ignored SIGCHLD, inherited through exec, would let the kernel reap the
+  // import helper before termshade reads how it ended.
+  std::signal(SIGCHLD, SIG_DFL);
   termshade::KeepFreedMemoryForReuse();
   try {
     return Run(argc, argv);

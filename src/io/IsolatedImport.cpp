@@ -113,6 +113,7 @@ pid_t SpawnHelper(const std::string& path, int requestFd, int frameFd, const Imp
 struct Ending {
   int status = 0;
   double cpuSeconds = 0.0;
+  bool statusRead = true;  ///< false: reaped by someone else (SIGCHLD ignored)
 };
 
 // The running helper: killed (its whole process group) and reaped when
@@ -148,8 +149,10 @@ class HelperProcess {
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     kill(-pid_, SIGKILL);  // anything it left behind in its group
-    while (wait4(pid_, &ending.status, 0, &usage) < 0 && errno == EINTR) {
+    int reaped = 0;
+    while ((reaped = wait4(pid_, &ending.status, 0, &usage)) < 0 && errno == EINTR) {
     }
+    ending.statusRead = reaped == pid_;
     reaped_ = true;
     const auto seconds = [](timeval t) {
       return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
@@ -165,6 +168,10 @@ class HelperProcess {
 
 // Why a helper that gave no result ended.
 std::string EndingMessage(const Ending& ending, const ImportLimits& limits) {
+  if (!ending.statusRead) {
+    return "the import helper ended without a result; how it ended could not be read (does "
+           "this process ignore SIGCHLD?)";
+  }
   const int status = ending.status;
   if (WIFSIGNALED(status)) {
     const int signal = WTERMSIG(status);

@@ -115,6 +115,11 @@ if [ -z "${TERMSHADE_SANITIZED:-}" ]; then
   hostile_helper 'kill -SEGV $$'
   run_alone "$work/cube.off"
   clean_error "a helper that crashes" "the importer (Assimp) crashed on the file (signal 11, SIGSEGV)" $?
+  # Started with SIGCHLD ignored (inherited through exec, which would let the
+  # kernel reap the helper unseen): termshade takes it back and still says why.
+  python3 -c 'import os, signal, sys; signal.signal(signal.SIGCHLD, signal.SIG_IGN); os.execv(sys.argv[1], sys.argv[1:])' \
+    "$work/alone/bin/termshade" render "$work/cube.off" --size 40x12 >"$work/out" 2>"$work/err" </dev/null
+  clean_error "a helper that crashes, SIGCHLD ignored" "the importer (Assimp) crashed on the file (signal 11, SIGSEGV)" $?
 fi
 hostile_helper "printf 'garbage' >&3"
 run_alone "$work/cube.off"
