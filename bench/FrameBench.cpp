@@ -9,7 +9,7 @@
 
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
-#include "geometry/TriangleBvh.h"
+#include "geometry/RayBvh.h"
 #include "io/ModelLoader.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
@@ -95,8 +95,8 @@ int RunFrameBench(const FrameBenchOptions& options) {
                       PrepareScene(GenerateTriangleSphere(triangles))});
   }
   const std::vector<FrameCase> cases{
-      {"hierarchy, 1 thread", 1, true, true, HierarchyUse::kAlways},
-      {"hierarchy, all", all, true, true, HierarchyUse::kAlways},
+      {"rays, 1 thread", 1, true, true, HierarchyUse::kAlways},
+      {"rays, all", all, true, true, HierarchyUse::kAlways},
       {"clusters, 1 thread", 1, true, true, HierarchyUse::kNever},
       {"clusters, all", all, true, true, HierarchyUse::kNever},
       {"1 thread, no culling", 1, true, false, HierarchyUse::kNever},
@@ -106,14 +106,14 @@ int RunFrameBench(const FrameBenchOptions& options) {
   };
   std::printf("| model | triangles | cells |");
   for (const FrameCase& c : cases) std::printf(" %s, ms |", c.name);
-  std::printf(" hierarchy / clusters, all | hierarchy: build ms, MB |\n|---|---|---|");
+  std::printf(" rays / clusters, all | hierarchy: build ms, MB |\n|---|---|---|");
   for (size_t k = 0; k <= cases.size() + 1; ++k) std::printf("---|");
   std::printf("\n");
   for (BenchScene& named : scenes) {
-    // Every scene gets its hierarchy here, below HierarchyStage::Faster too, to show the
+    // Every scene gets its hierarchy here, below RayCastStage::Faster too, to show the
     // crossover.
     const Clock::time_point buildStart = Clock::now();
-    auto bvh = std::make_shared<const TriangleBvh>(BuildTriangleBvh(named.scene));
+    auto bvh = std::make_shared<const RayBvh>(BuildRayBvh(named.scene));
     const double buildMs =
         std::chrono::duration<double, std::milli>(Clock::now() - buildStart).count();
     const double megabytes = static_cast<double>(bvh->Bytes()) / (1 << 20);

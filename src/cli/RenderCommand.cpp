@@ -11,12 +11,12 @@
 
 #include "geometry/FitCamera.h"
 #include "geometry/LevelOfDetail.h"
-#include "geometry/TriangleBvh.h"
+#include "geometry/RayBvh.h"
 #include "io/FrameFormats.h"
 #include "io/ModelLoader.h"
 #include "io/OutputFile.h"
 #include "raster/DetailPick.h"
-#include "raster/HierarchyStage.h"
+#include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
 #include "tui/TerminalColours.h"
 
@@ -189,11 +189,11 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     }
     const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
     // A long turntable of a big scene: the hierarchy pays for its build (same
-    // frames). Built on this thread, so only where the walk was quicker somewhere.
+    // frames). Built on this thread, so only where the rays were quicker.
     if (options.frames >= kHierarchyFromFrames && *detail == DetailMode::kOff &&
-        HierarchyStage::WouldWalk(scene, widthCells, heightCells, renderOptions,
-                                  HierarchyStage::kFasterFromTrianglesPerSample)) {
-      scene.hierarchy.Attach(std::make_shared<const TriangleBvh>(BuildTriangleBvh(scene)));
+        RayCastStage::WouldCast(scene, widthCells, heightCells, renderOptions,
+                                RayCastStage::kFasterFromTrianglesPerSample)) {
+      scene.hierarchy.Attach(std::make_shared<const RayBvh>(BuildRayBvh(scene)));
     }
     std::optional<DetailLevels> levels;
     if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));

@@ -380,7 +380,7 @@ int Run(int argc, char** argv) {
   termshade::FrameBenchOptions frameBench;
   CLI::App* frameCommand = benchCommand->add_subcommand(
       "frame",
-      "frame time by triangles x cells: the hierarchy walk against clusters, 1 thread against all, "
+      "frame time by triangles x cells: rays through the hierarchy against clusters, 1 thread against all, "
       "culling on and off, and the measured choice between the two passes (the default)");
   frameCommand
       ->add_option("--models", frameBench.modelPaths,

@@ -49,7 +49,7 @@ struct Scene {
   /// Per triangle, its 0-based face; empty when triangle t is face t.
   std::vector<uint32_t> triangleFaces;
   SceneClusters clusters;  ///< the triangles in runs, for culling whole runs per frame
-  /// The triangles' hierarchy for HierarchyStage, once a front end has
+  /// The triangles' hierarchy for RayCastStage, once a front end has
   /// built and attached it (big scenes drawn many times).
   SceneHierarchy hierarchy;
   SceneSource source;  ///< the rest of the model (closed parts outward), where the arrays lack it

@@ -4,13 +4,13 @@
 
 namespace termshade {
 
-std::shared_ptr<const TriangleBvh> SceneHierarchy::Get(const Scene& scene) const {
+std::shared_ptr<const RayBvh> SceneHierarchy::Get(const Scene& scene) const {
   const std::lock_guard<std::mutex> lock(state_->mutex);
   if (state_->bvh == nullptr || !state_->bvh->BuiltFor(scene)) return nullptr;
   return state_->bvh;
 }
 
-void SceneHierarchy::Attach(std::shared_ptr<const TriangleBvh> bvh) const {
+void SceneHierarchy::Attach(std::shared_ptr<const RayBvh> bvh) const {
   const std::lock_guard<std::mutex> lock(state_->mutex);
   state_->bvh = std::move(bvh);
 }

@@ -47,9 +47,9 @@ struct RenderVariant {
   /// Whole clusters that face away or cover no sample are skipped (exact).
   bool clusterCulling = true;
   /// One-sample zbuffer and cull frames of a scene with a hierarchy
-  /// (Scene::hierarchy) walk it (src/raster/HierarchyStage) where that is
-  /// exact for the view: kWhenFaster when the scene has many triangles a
-  /// sample and the walk is measured quicker (SurfacePassChoice), kAlways
+  /// (Scene::hierarchy) cast a ray a sample through it (src/raster/RayCastStage)
+  /// where that is exact for the view: kWhenFaster when the scene has many
+  /// triangles a sample and the rays are measured quicker (SurfacePassChoice), kAlways
   /// whatever the count (tests, bench); else cluster by cluster. The same
   /// frame either way.
   HierarchyUse hierarchy = HierarchyUse::kWhenFaster;

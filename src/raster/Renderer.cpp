@@ -349,18 +349,18 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   const int width = cells.WidthCells(), height = cells.HeightCells();
   const bool wanted =
       use == HierarchyUse::kAlways ||
-      (use == HierarchyUse::kWhenFaster && HierarchyStage::WorthTrying(scene, width, height));
-  const std::shared_ptr<const TriangleBvh> bvh = wanted ? scene.hierarchy.Get(scene) : nullptr;
-  drewByHierarchy_ = bvh != nullptr && HierarchyStage::Applies(scene, *bvh, frame);
+      (use == HierarchyUse::kWhenFaster && RayCastStage::WorthTrying(scene, width, height));
+  const std::shared_ptr<const RayBvh> bvh = wanted ? scene.hierarchy.Get(scene) : nullptr;
+  drewByHierarchy_ = bvh != nullptr && RayCastStage::Applies(scene, *bvh, frame);
   if (!drewByHierarchy_) return clusterStage_.Draw(scene, frame, threads, depth, cells);
   if (use == HierarchyUse::kAlways) {
-    return hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells);
+    return rayCastStage_.Draw(scene, *bvh, frame, threads, depth, cells);
   }
   return DrawByQuickerPass(scene, bvh, frame, threads, depth, cells);
 }
 
 // Both passes draw this frame bit for bit: the one measured quicker here.
-int Renderer::DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const TriangleBvh>& bvh,
+int Renderer::DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const RayBvh>& bvh,
                                 const ClusterFrame& frame, int threads, DepthBuffer& depth,
                                 CellBuffer& cells) {
   // Another hierarchy, even at a freed one's address, is another key.
@@ -372,12 +372,12 @@ int Renderer::DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const 
   }
   const int width = cells.WidthCells(), height = cells.HeightCells();
   const SurfaceChoiceKey key{choiceHierarchySerial_, width, height, threads};
-  const SurfacePass prior = HierarchyStage::Faster(scene, width, height) ? SurfacePass::kHierarchy
-                                                                         : SurfacePass::kClusters;
+  const SurfacePass prior = RayCastStage::Faster(scene, width, height) ? SurfacePass::kHierarchy
+                                                                       : SurfacePass::kClusters;
   drewByHierarchy_ = passChoice_.Pick(key, prior) == SurfacePass::kHierarchy;
   const auto start = std::chrono::steady_clock::now();
   const int drawn = drewByHierarchy_
-                        ? hierarchyStage_.Draw(scene, *bvh, frame, threads, depth, cells)
+                        ? rayCastStage_.Draw(scene, *bvh, frame, threads, depth, cells)
                         : clusterStage_.Draw(scene, frame, threads, depth, cells);
   passChoice_.Record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());

@@ -13,7 +13,7 @@
 #include "raster/ClusterStage.h"
 #include "raster/DepthBuffer.h"
 #include "raster/GlyphStage.h"
-#include "raster/HierarchyStage.h"
+#include "raster/RayCastStage.h"
 #include "raster/RenderOptions.h"
 #include "raster/SampleFrame.h"
 #include "raster/SurfacePassChoice.h"
@@ -25,7 +25,7 @@ namespace termshade {
 struct RenderStats {
   int trianglesDrawn = 0;  ///< triangles rasterized: facing the eye (or culling off), near a sample
   int facesVisible = 0;    ///< distinct faces seen in at least one cell
-  bool byHierarchy = false;  ///< the surfaces were found by walking Scene::bvh (HierarchyStage)
+  bool byHierarchy = false;  ///< the surfaces were found by rays through Scene::hierarchy (RayCastStage)
 };
 
 /// The method actually drawn: auto becomes cull or zbuffer for the scene.
@@ -65,7 +65,7 @@ class Renderer {
                    DepthBuffer& depth, CellBuffer& cells);
   int DrawClusters(const Scene& scene, const Camera& camera, const RenderOptions& options,
                    DepthBuffer& depth, CellBuffer& cells, TriangleSink* sink = nullptr);
-  int DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const TriangleBvh>& bvh,
+  int DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const RayBvh>& bvh,
                         const ClusterFrame& frame, int threads, DepthBuffer& depth,
                         CellBuffer& cells);
   int DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,
@@ -92,10 +92,10 @@ class Renderer {
   SampleFrame sampleFrame_;  ///< the same samples cell by cell: what the glyph stage reads
   GlyphStage glyphStage_;
   ClusterStage clusterStage_;
-  HierarchyStage hierarchyStage_;
-  bool drewByHierarchy_ = false;  ///< the last DrawClusters walked the hierarchy
-  SurfacePassChoice passChoice_;  ///< walk or clusters, by their times (HierarchyUse::kWhenFaster)
-  std::weak_ptr<const TriangleBvh> choiceHierarchy_;  ///< the hierarchy passChoice_ timed
+  RayCastStage rayCastStage_;
+  bool drewByHierarchy_ = false;  ///< the last DrawClusters cast rays through the hierarchy
+  SurfacePassChoice passChoice_;  ///< rays or clusters, by their times (HierarchyUse::kWhenFaster)
+  std::weak_ptr<const RayBvh> choiceHierarchy_;  ///< the hierarchy passChoice_ timed
   uint64_t choiceHierarchySerial_ = 0;                ///< bumped when it changes
   SampleGrid lastGrid_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort

@@ -18,7 +18,7 @@ struct SurfaceChoiceKey {
   bool operator==(const SurfaceChoiceKey&) const = default;
 };
 
-/// Chooses, frame by frame, between the cluster pass and the hierarchy walk
+/// Chooses, frame by frame, between the cluster pass and the rays through the hierarchy
 /// by their measured times: which is quicker depends on the machine (its
 /// caches and memory) as much as on triangles a sample, and the frames are
 /// the same either way. After a new key the first frame (cold buffers) is

@@ -13,10 +13,10 @@
 
 #include "geometry/HeapPolicy.h"
 #include "geometry/LevelOfDetail.h"
-#include "geometry/TriangleBvh.h"
+#include "geometry/RayBvh.h"
 #include "io/LoadError.h"
 #include "raster/DetailPick.h"
-#include "raster/HierarchyStage.h"
+#include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
@@ -79,7 +79,7 @@ std::string HomeDirectory() {
 }
 
 using DetailJob = SceneJob<DetailLevels>;
-using HierarchyJob = SceneJob<TriangleBvh>;
+using HierarchyJob = SceneJob<RayBvh>;
 
 DetailLevels BuildLevels(const Scene& scene, const std::atomic<bool>& cancel) {
   DetailBuildOptions options;
@@ -87,8 +87,8 @@ DetailLevels BuildLevels(const Scene& scene, const std::atomic<bool>& cancel) {
   return BuildDetailLevels(scene, options);
 }
 
-TriangleBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
-  return BuildTriangleBvh(scene, &cancel);
+RayBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
+  return BuildRayBvh(scene, &cancel);
 }
 
 class EventLoop {
@@ -192,10 +192,11 @@ class EventLoop {
     }
   }
 
-  // The triangle hierarchy of a big scene (HierarchyStage) when frames are
-  // exact (with --lod auto a simplified level draws where the walk would pay):
+  // The triangle hierarchy of a big scene (RayCastStage) when frames are
+  // exact (with --lod auto a simplified level draws where the rays would pay):
   // built on a worker once the first frame is up and no other job runs,
-  // attached when done (frames then walk it: the same frames, sooner); tried
+  // attached when done (frames then cast rays through it: the same frames,
+  // sooner); tried
   // once per scene.
   void UpdateHierarchyJob() {
     const std::shared_ptr<const Scene>& scene = state_.SharedScene();
@@ -205,13 +206,13 @@ class EventLoop {
       ReturnFreedMemory();
     }
     if (hierarchyJob_ && hierarchyJob_->Finished()) {
-      std::shared_ptr<const TriangleBvh> bvh = hierarchyJob_->Take();
+      std::shared_ptr<const RayBvh> bvh = hierarchyJob_->Take();
       hierarchyJob_->ForScene()->hierarchy.Attach(std::move(bvh));
       hierarchyJob_.reset();
     }
     if (!hierarchyJob_ && !detailJob_ && !job_ && framesDrawn_ > 0 && scene &&
         state_.Detail() == DetailMode::kOff && hierarchyTriedFor_.lock() != scene &&
-        HierarchyStage::WouldWalk(*scene, cells_.WidthCells(), cells_.HeightCells(),
+        RayCastStage::WouldCast(*scene, cells_.WidthCells(), cells_.HeightCells(),
                                   frameOptions_)) {
       hierarchyTriedFor_ = scene;
       hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);

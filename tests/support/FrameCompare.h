@@ -26,7 +26,8 @@ struct DrawnFrame {
 DrawnFrame DrawOrbit(Renderer& renderer, const Scene& scene, const OrbitView& view, int width,
                      int height, const RenderOptions& options);
 
-/// Bit for bit: face numbers, glyphs and the depth buffer's floats, and the counts.
+/// Bit for bit: face numbers, glyphs and the depth buffer's floats, and the
+/// counts (the triangle count only where neither frame was drawn by rays).
 void ExpectSameFrame(const DrawnFrame& expected, const DrawnFrame& actual, const std::string& what);
 
 }  // namespace termshade::test

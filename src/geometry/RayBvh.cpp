@@ -1,0 +1,368 @@
+#include "geometry/RayBvh.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <utility>
+
+#include "geometry/HugePages.h"
+#include "geometry/LoadThreads.h"
+#include "geometry/Scene.h"
+
+namespace termshade {
+namespace {
+
+// The low 21 bits of x spread to every third bit.
+uint64_t Spread3(uint64_t x) {
+  x &= 0x1FFFFF;
+  x = (x | x << 32) & 0x1F00000000FFFF;
+  x = (x | x << 16) & 0x1F0000FF0000FF;
+  x = (x | x << 8) & 0x100F00F00F00F00F;
+  x = (x | x << 4) & 0x10C30C30C30C30C3;
+  x = (x | x << 2) & 0x1249249249249249;
+  return x;
+}
+
+float Down(double x) {
+  auto f = static_cast<float>(x);
+  if (static_cast<double>(f) > x) f = std::nextafter(f, -INFINITY);
+  return f;
+}
+
+float Up(double x) {
+  auto f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, INFINITY);
+  return f;
+}
+
+struct Box {
+  double low[3] = {INFINITY, INFINITY, INFINITY};
+  double high[3] = {-INFINITY, -INFINITY, -INFINITY};
+  void Add(const Vec3& p) {
+    const double c[3] = {p.x, p.y, p.z};
+    for (int k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], c[k]);
+      high[k] = std::max(high[k], c[k]);
+    }
+  }
+  void Add(const Box& b) {
+    for (int k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], b.low[k]);
+      high[k] = std::max(high[k], b.high[k]);
+    }
+  }
+};
+
+// A subtree's normal cone while building: a unit axis (the stored float
+// axis, normalized again) and a half-angle about it.
+struct Cone {
+  bool allAway = true;  ///< no face with a normal yet (degenerate faces never face a point)
+  bool usable = false;
+  Vec3 axis;
+  double angle = 0.0;
+  Vec3 center;  ///< as stored (float)
+  double heightMax = -INFINITY;
+};
+
+Vec3 StoredVector(const float (&v)[3]) { return {v[0], v[1], v[2]}; }
+
+// A cone's axis and center as stored (rounded to float first); usable
+// stays false when the axis is too short to point anywhere.
+Cone StartCone(Vec3 axisSum, const Box& box, RayBvhCone& stored) {
+  Cone cone;
+  cone.allAway = false;
+  const double sumLength = Length(axisSum);
+  const Vec3 unit = sumLength > 1e-6 ? axisSum * (1.0 / sumLength) : Vec3{};
+  const float axisF[3] = {static_cast<float>(unit.x), static_cast<float>(unit.y),
+                          static_cast<float>(unit.z)};
+  for (int k = 0; k < 3; ++k) {
+    stored.axis[k] = axisF[k];
+    stored.center[k] = static_cast<float>((box.low[k] + box.high[k]) / 2);
+  }
+  cone.center = StoredVector(stored.center);
+  stored.coneCos = RayBvhCone::kNoCone;
+  const double axisLength = Length(StoredVector(axisF));
+  if (sumLength > 1e-6 && axisLength > 0.5) {
+    cone.axis = StoredVector(axisF) * (1.0 / axisLength);
+    cone.usable = true;
+  }
+  return cone;
+}
+
+// The cone's half-angle and heights, measured against its stored axis and
+// center, stored widened past their rounding (too wide: not usable).
+void FinishCone(Cone& cone, double widest, double heightMax, const Box& box,
+                RayBvhCone& stored) {
+  cone.angle = widest + 1e-6;
+  cone.heightMax = heightMax;
+  if (!cone.usable || !(cone.angle < 1.5)) {
+    cone.usable = false;
+    stored.coneCos = RayBvhCone::kNoCone;
+    return;
+  }
+  const double diagonal =
+      Length(Vec3{box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2]});
+  stored.coneCos = Down(std::cos(cone.angle) - 1e-6);
+  stored.heightMax = Up(heightMax + 1e-6 * diagonal + 1e-9 * Length(cone.center));
+}
+
+struct Keyed {
+  uint64_t code;
+  uint32_t triangle;
+};
+
+// Morton codes of the triangles' centroids in the scene's box, sorted (ties
+// by triangle index: a stable radix sort of keys made in index order).
+std::vector<Keyed> SortedByMorton(const Scene& scene, const Box& sceneBox) {
+  const size_t count = scene.triangles.size();
+  std::vector<Keyed> keys(count), scratch(count);
+  double scale[3];
+  for (int k = 0; k < 3; ++k) {
+    const double extent = sceneBox.high[k] - sceneBox.low[k];
+    scale[k] = extent > 0.0 ? 2097151.0 / extent : 0.0;
+  }
+  RunRangesOnLoadThreads(LoadThreadCount(count), count, [&](int, size_t begin, size_t end) {
+    for (size_t t = begin; t < end; ++t) {
+      const auto& v = scene.triangles[t].vertices;
+      const Vec3 c = (scene.verticesWorld[v[0]] + scene.verticesWorld[v[1]] +
+                      scene.verticesWorld[v[2]]) *
+                     (1.0 / 3.0);
+      const double at[3] = {c.x, c.y, c.z};
+      uint64_t code = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double q = std::clamp((at[k] - sceneBox.low[k]) * scale[k], 0.0, 2097151.0);
+        code |= Spread3(static_cast<uint64_t>(q)) << k;
+      }
+      keys[t] = {code, static_cast<uint32_t>(t)};
+    }
+  });
+  // LSD radix sort, 11 bits a pass over the 63 bits.
+  constexpr int kBits = 11;
+  constexpr size_t kBuckets = size_t{1} << kBits;
+  std::vector<size_t> counts(kBuckets);
+  for (int shift = 0; shift < 63; shift += kBits) {
+    std::fill(counts.begin(), counts.end(), 0);
+    for (const Keyed& k : keys) ++counts[k.code >> shift & (kBuckets - 1)];
+    size_t sum = 0;
+    for (size_t& c : counts) sum += std::exchange(c, sum);
+    for (const Keyed& k : keys) scratch[counts[k.code >> shift & (kBuckets - 1)]++] = k;
+    keys.swap(scratch);
+  }
+  return keys;
+}
+
+class Builder {
+ public:
+  Builder(const Scene& scene, RayBvh& bvh, std::vector<Keyed> keys,
+          const std::atomic<bool>* cancel)
+      : scene_(scene), bvh_(bvh), keys_(std::move(keys)), cancel_(cancel) {}
+
+  struct Built {
+    uint32_t ref;
+    Box box;
+    Cone cone;
+  };
+
+  // The subtree over sorted triangles [begin, end): a leaf when few, else a
+  // node of up to four children (two Morton splits).
+  Built Build(size_t begin, size_t end) {
+    if (end - begin <= RayBvh::kLeafTriangles) return Leaf(begin, end);
+    if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed)) return {RayBvh::kEmpty, {}, {}};
+    const auto node = static_cast<uint32_t>(bvh_.nodes.size());
+    bvh_.nodes.emplace_back();
+    std::pair<size_t, size_t> parts[4];
+    int partCount = 0;
+    const size_t middle = Split(begin, end);
+    for (const auto& [b, e] : {std::pair{begin, middle}, std::pair{middle, end}}) {
+      if (e - b <= RayBvh::kLeafTriangles) {
+        parts[partCount++] = {b, e};
+      } else {
+        const size_t m = Split(b, e);
+        parts[partCount++] = {b, m};
+        parts[partCount++] = {m, e};
+      }
+    }
+    bvh_.cones.emplace_back();
+    Box box;
+    RayBvhNode filled{};
+    Cone cones[4];
+    for (int i = 0; i < 4; ++i) {
+      Box childBox;
+      filled.child[i] = RayBvh::kEmpty;
+      if (i < partCount) {
+        const Built child = Build(parts[i].first, parts[i].second);
+        filled.child[i] = child.ref;
+        childBox = child.box;
+        cones[i] = child.cone;
+        box.Add(childBox);
+      }
+      for (int k = 0; k < 3; ++k) {
+        // An empty child: low +inf, high -inf, which no ray reaches.
+        filled.low[k][i] = i < partCount ? Down(childBox.low[k]) : INFINITY;
+        filled.high[k][i] = i < partCount ? Up(childBox.high[k]) : -INFINITY;
+      }
+    }
+    bvh_.nodes[node] = filled;
+    return {node, box, MergeCones(cones, partCount, box, bvh_.cones[node])};
+  }
+
+ private:
+  Built Leaf(size_t begin, size_t end) {
+    Box box;
+    const auto first = static_cast<uint32_t>(begin);
+    Vec3 normalSum{};
+    bool anyFacing = false;
+    for (size_t i = begin; i < end; ++i) {
+      const uint32_t t = keys_[i].triangle;
+      bvh_.triangles[i] = t;
+      for (const uint32_t v : scene_.triangles[t].vertices) box.Add(scene_.verticesWorld[v]);
+      const Vec3 n = scene_.facePlanesWorld[scene_.TriangleFace(t)].normal;
+      anyFacing = anyFacing || Dot(n, n) != 0.0;
+      normalSum = normalSum + n;
+    }
+    Built built{RayBvh::LeafRef(first, static_cast<uint32_t>(end - begin)), box, {}};
+    if (!anyFacing) return built;  // every face degenerate: never facing
+    RayBvhCone stored{};
+    built.cone = StartCone(normalSum, box, stored);
+    if (!built.cone.usable) return built;
+    double widest = 0.0, heightMax = -INFINITY;
+    const Vec3 center = built.cone.center;
+    for (size_t i = begin; i < end; ++i) {
+      const FacePlane& plane = scene_.facePlanesWorld[scene_.TriangleFace(keys_[i].triangle)];
+      if (Dot(plane.normal, plane.normal) == 0.0) continue;
+      widest = std::max(widest, std::acos(std::clamp(Dot(plane.normal, built.cone.axis), -1.0, 1.0)));
+      const double slack = 1e-9 * (Length(center) + std::fabs(plane.offset));
+      heightMax = std::max(heightMax, Dot(plane.normal, center) - plane.offset + slack);
+    }
+    FinishCone(built.cone, widest, heightMax, box, stored);
+    return built;
+  }
+
+  // A node's cone from its children's: axes summed, angles added to their
+  // axes' angle from it, heights moved to its center (|n| = 1).
+  static Cone MergeCones(const Cone* cones, int count, const Box& box, RayBvhCone& stored) {
+    Vec3 axisSum{};
+    bool allAway = true, anyUnusable = false;
+    for (int i = 0; i < count; ++i) {
+      if (cones[i].allAway) continue;
+      allAway = false;
+      anyUnusable = anyUnusable || !cones[i].usable;
+      axisSum = axisSum + cones[i].axis;
+    }
+    if (allAway) {
+      stored.coneCos = RayBvhCone::kAllAway;
+      return {};
+    }
+    Cone cone = StartCone(axisSum, box, stored);
+    if (anyUnusable) cone.usable = false;
+    double widest = 0.0, heightMax = -INFINITY;
+    if (cone.usable) {
+      for (int i = 0; i < count; ++i) {
+        const Cone& child = cones[i];
+        if (child.allAway) continue;
+        widest = std::max(widest, std::acos(std::clamp(Dot(cone.axis, child.axis), -1.0, 1.0)) +
+                                      child.angle);
+        const double shift =
+            Length(cone.center - child.center) * (1.0 + 1e-12) + 1e-9 * Length(cone.center);
+        heightMax = std::max(heightMax, child.heightMax + shift);
+      }
+    }
+    FinishCone(cone, widest, heightMax, box, stored);
+    return cone;
+  }
+
+  // Where [begin, end) splits: at the highest bit in which its codes differ
+  // (they are sorted, so one binary search), or in half where all are equal.
+  size_t Split(size_t begin, size_t end) const {
+    const uint64_t first = keys_[begin].code, last = keys_[end - 1].code;
+    if (first == last) return begin + (end - begin) / 2;
+    const uint64_t bit = uint64_t{1} << (63 - std::countl_zero(first ^ last));
+    const auto at = std::partition_point(keys_.begin() + static_cast<std::ptrdiff_t>(begin),
+                                         keys_.begin() + static_cast<std::ptrdiff_t>(end),
+                                         [bit](const Keyed& k) { return (k.code & bit) == 0; });
+    return static_cast<size_t>(at - keys_.begin());
+  }
+
+  const Scene& scene_;
+  RayBvh& bvh_;
+  std::vector<Keyed> keys_;
+  const std::atomic<bool>* cancel_;
+};
+
+}  // namespace
+
+bool FacesAway(const RayBvhCone& cone, Vec3 pWorld, double pLength) {
+  if (cone.coneCos == RayBvhCone::kAllAway) return true;
+  if (!(cone.coneCos > 0.0F)) return false;
+  // As FacingOf (Clusters.cpp): n . p - offset = n . v + (n . c - offset)
+  // with v = p - c; over the cone, n . v <= (a . v) cos t + |a x v| sin t
+  // when v lies outside it. The stored axis is unit within 1e-7 and |a x v|
+  // is taken from |v|^2 - (a . v)^2: both widened by their error.
+  const Vec3 v{pWorld.x - cone.center[0], pWorld.y - cone.center[1], pWorld.z - cone.center[2]};
+  const double lengthSquared = Dot(v, v);
+  const double length = std::sqrt(lengthSquared);
+  const double along = cone.axis[0] * v.x + cone.axis[1] * v.y + cone.axis[2] * v.z;
+  const double coneCos = cone.coneCos;
+  if (!(along < length * coneCos - 1e-6 * length)) return false;
+  const double across = std::sqrt(std::max(0.0, lengthSquared - along * along)) + 1e-7 * length;
+  const double sinT = std::sqrt(1.0 - coneCos * coneCos);
+  const double margin = 1e-6 * (length + std::fabs(double{cone.heightMax})) + 1e-9 * (2.0 * pLength + length);
+  return along * coneCos + across * sinT + cone.heightMax < -margin;
+}
+
+bool RayBvh::BuiltFor(const Scene& scene) const {
+  return !nodes.empty() && trianglesData == scene.triangles.data() &&
+         triangleCount == scene.triangles.size() && verticesData == scene.verticesWorld.data() &&
+         vertexCount == scene.verticesWorld.size();
+}
+
+RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel) {
+  RayBvh bvh;
+  const size_t count = scene.triangles.size();
+  if (count == 0 || count >= RayBvh::kMaxTriangles) return bvh;
+  // Step 1: the box of every vertex a triangle uses, and the Morton order.
+  Box sceneBox;
+  for (const SceneTriangle& t : scene.triangles) {
+    for (const uint32_t v : t.vertices) sceneBox.Add(scene.verticesWorld[v]);
+  }
+  std::vector<Keyed> keys = SortedByMorton(scene, sceneBox);
+  if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return {};
+  // Step 2: the tree, depth first from a root node (a root that would be a
+  // lone leaf becomes a node with one leaf child).
+  // Every frame reads both at random: huge pages spare a TLB miss a read.
+  bvh.triangles.reserve(count);
+  AdviseHugePages(bvh.triangles);
+  bvh.triangles.resize(count);
+  bvh.nodes.reserve(count / 2 + 1);
+  AdviseHugePages(bvh.nodes);
+  bvh.cones.reserve(count / 2 + 1);
+  AdviseHugePages(bvh.cones);
+  Builder builder(scene, bvh, std::move(keys), cancel);
+  if (count <= RayBvh::kLeafTriangles) {
+    bvh.nodes.emplace_back();
+    bvh.cones.push_back({{0, 0, 0}, {0, 0, 0}, RayBvhCone::kNoCone, 0.0F});
+    const Builder::Built leaf = builder.Build(0, count);
+    RayBvhNode& root = bvh.nodes[0];
+    for (int i = 0; i < 4; ++i) {
+      root.child[i] = i == 0 ? leaf.ref : RayBvh::kEmpty;
+      for (int k = 0; k < 3; ++k) {
+        root.low[k][i] = i == 0 ? Down(leaf.box.low[k]) : INFINITY;
+        root.high[k][i] = i == 0 ? Up(leaf.box.high[k]) : -INFINITY;
+      }
+    }
+  } else {
+    builder.Build(0, count);
+  }
+  if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return {};
+  for (int k = 0; k < 3; ++k) {
+    bvh.low[k] = Down(sceneBox.low[k]);
+    bvh.high[k] = Up(sceneBox.high[k]);
+  }
+  bvh.trianglesData = scene.triangles.data();
+  bvh.triangleCount = count;
+  bvh.verticesData = scene.verticesWorld.data();
+  bvh.vertexCount = scene.verticesWorld.size();
+  return bvh;
+}
+
+}  // namespace termshade

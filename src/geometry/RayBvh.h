@@ -1,0 +1,85 @@
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/Vec3.h"
+
+namespace termshade {
+
+struct Scene;
+
+/// One node of a RayBvh: the world-space boxes of up to four children, as
+/// structure of arrays (four children a SIMD register). Boxes are floats
+/// rounded outward, so every corner of a child's triangles lies inside.
+struct alignas(16) RayBvhNode {
+  float low[3][4];   ///< [axis][child]
+  float high[3][4];  ///< [axis][child]
+  /// Per child: an inner node's index; a leaf as RayBvh::LeafRef; or
+  /// RayBvh::kEmpty (its box is empty: low > high).
+  uint32_t child[4];
+};
+
+/// The normal cone of a node's faces: every face's unit normal n has
+/// n . axis / |axis| >= coneCos, and n . center - offset <= heightMax (its
+/// plane n . p = offset). Floats; the bounds hold for them as stored.
+struct RayBvhCone {
+  float center[3];
+  float axis[3];    ///< unit within float rounding
+  float coneCos;    ///< kNoCone: none usable; kAllAway: no face can face any point
+  float heightMax;  ///< widened past the rounding of the stored center and axis
+  static constexpr float kNoCone = -2.0F;
+  static constexpr float kAllAway = 2.0F;
+};
+
+/// True only when every face of the cone's node faces away from pWorld
+/// (FacePlane::FacesPoint false for each; conservative, rounding included);
+/// pLength = |pWorld|.
+bool FacesAway(const RayBvhCone& cone, Vec3 pWorld, double pLength);
+
+/// A four-wide bounding-volume hierarchy over a scene's triangles for
+/// finding, per sample, the triangles that may cover it (RayCastStage).
+/// Triangles are sorted in Morton order of their centroids and split where
+/// their codes first differ; leaves hold up to kLeafTriangles of them.
+struct RayBvh {
+  static constexpr uint32_t kLeafTriangles = 4;
+  static constexpr uint32_t kLeafBit = 1U << 31;
+  static constexpr uint32_t kCountBits = 3;
+  static constexpr uint32_t kEmpty = UINT32_MAX;
+  /// Scenes of this many triangles or more are not served (leaf references
+  /// keep a triangle offset in 28 bits).
+  static constexpr size_t kMaxTriangles = size_t{1} << 28;
+
+  std::vector<RayBvhNode> nodes;    ///< nodes[0] is the root (when not empty)
+  std::vector<RayBvhCone> cones;    ///< per node: its faces' normal cone
+  std::vector<uint32_t> triangles;  ///< scene triangle indices; each leaf a run of them
+  float low[3] = {0, 0, 0};         ///< the root's box, world space
+  float high[3] = {0, 0, 0};
+  /// The triangles and vertices it was built over (their arrays and counts).
+  const void* trianglesData = nullptr;
+  size_t triangleCount = 0;
+  const void* verticesData = nullptr;
+  size_t vertexCount = 0;
+
+  static constexpr uint32_t LeafRef(uint32_t first, uint32_t count) {
+    return kLeafBit | first << kCountBits | count;
+  }
+  static constexpr bool IsLeaf(uint32_t ref) { return ref != kEmpty && (ref & kLeafBit) != 0; }
+  static constexpr uint32_t LeafFirst(uint32_t ref) { return (ref & ~kLeafBit) >> kCountBits; }
+  static constexpr uint32_t LeafCount(uint32_t ref) { return ref & ((1U << kCountBits) - 1); }
+
+  bool Empty() const { return nodes.empty(); }
+  size_t Bytes() const {
+    return nodes.size() * (sizeof(RayBvhNode) + sizeof(RayBvhCone)) +
+           triangles.size() * sizeof(uint32_t);
+  }
+  bool BuiltFor(const Scene& scene) const;
+};
+
+/// Builds the hierarchy. A set `cancel` stops it early with an empty one;
+/// scenes of kMaxTriangles or more get an empty one.
+RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace termshade

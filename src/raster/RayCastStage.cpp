@@ -1,0 +1,440 @@
+#include "raster/RayCastStage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "geometry/FixedRange.h"
+#include "raster/FixedPoint.h"
+#include "raster/VertexStage.h"
+
+#ifdef RAYCAST_STATS
+long gNodes=0,gLeaves=0,gTris=0,gFront=0,gRays=0;
+#define STAT(x) ++x
+#else
+#define STAT(x)
+#endif
+namespace termshade {
+namespace {
+
+using Floats4 = float __attribute__((vector_size(16)));
+using Ints4 = int32_t __attribute__((vector_size(16)));
+
+Floats4 Load4(const float* p) {
+  Floats4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+Floats4 Splat(float x) { return Floats4{x, x, x, x}; }
+
+Floats4 Min4(Floats4 a, Floats4 b) { return a < b ? a : b; }
+Floats4 Max4(Floats4 a, Floats4 b) { return a > b ? a : b; }
+
+// Snapping moves a corner 1/512 cell at most; the projection's own rounding
+// is far below the rest.
+constexpr double kSnapCells = 1.0 / 512.0 + 1e-6;
+// Relative slack of a depth bound: float 1/z of a corner, and the
+// interpolation's three roundings (SPEC 5: 1/z interpolated in float).
+constexpr float kDepthSlack = 1e-5F;
+constexpr int kStackEntries = 512;  // a tree is at most about 100 levels deep
+
+// What a frame fixes for every ray.
+struct CastFrame {
+  const Scene& scene;
+  const RayBvh& bvh;
+  const ClusterFrame& frame;
+  int width, height;
+  double rows[3][3];   ///< eyeFromWorld's rotation rows (world vectors)
+  float eye[3];        ///< world
+  float forward[3];    ///< world: the view direction (eye -z)
+  uint32_t depthSide;  ///< per axis bit: forward >= 0 (the near side of a box is its low)
+  float margin;        ///< world units every box is widened by
+  float depthMargin;   ///< subtracted from a box's nearest depth
+  double eyeLength;    ///< |eye|
+
+  CastFrame(const Scene& s, const RayBvh& b, const ClusterFrame& f, int w, int h)
+      : scene(s), bvh(b), frame(f), width(w), height(h) {
+    const auto& m = frame.eyeFromWorld.m;
+    for (int r = 0; r < 3; ++r) {
+      for (int k = 0; k < 3; ++k) rows[r][k] = m[static_cast<size_t>(r * 4 + k)];
+    }
+    const double eyeWorld[3] = {frame.eyeWorld.x, frame.eyeWorld.y, frame.eyeWorld.z};
+    eyeLength = Length(frame.eyeWorld);
+    depthSide = 0;
+    double farDepth = 0.0, boxReach = 0.0, eyeReach = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      eye[k] = static_cast<float>(eyeWorld[k]);
+      forward[k] = static_cast<float>(-rows[2][k]);
+      if (forward[k] >= 0.0F) depthSide |= 1U << k;
+      farDepth += std::max(-rows[2][k] * (bvh.low[k] - eyeWorld[k]),
+                           -rows[2][k] * (bvh.high[k] - eyeWorld[k]));
+      boxReach = std::max({boxReach, std::fabs(double{bvh.low[k]}), std::fabs(double{bvh.high[k]})});
+      eyeReach = std::max(eyeReach, std::fabs(eyeWorld[k]));
+    }
+    // The beam of a sample's 1/512-cell square reaches a radius of
+    // kSnapCells * sqrt(1 + a^2) / d per unit of depth; rays are
+    // (u - cx) / d across, so their length is at most `reach` per unit depth.
+    const Projection& p = frame.projection;
+    const double across = std::max(std::fabs(p.cx), std::fabs(w - p.cx)) / p.d;
+    const double down = std::max(std::fabs(p.cy), std::fabs(h - p.cy)) * p.cellAspect / p.d;
+    const double reach = std::sqrt(1.0 + across * across + down * down);
+    const double beam = kSnapCells * std::sqrt(1.0 + p.cellAspect * p.cellAspect) / p.d * farDepth;
+    // Float rounding of boxes, eye, direction and the slab products.
+    const double rounding = 1e-5 * (eyeReach + boxReach + farDepth * reach);
+    margin = static_cast<float>(beam + rounding);
+    depthMargin = static_cast<float>(2.0 * (beam + rounding));
+  }
+};
+
+// One sample's ray: its direction's reciprocals and the widened planes' offsets.
+struct Ray {
+  Floats4 inverse[3];    ///< 1 / direction, per axis, splat
+  Floats4 nearFrom[3];   ///< eye -+ margin: where the near planes' distances are taken from
+  Floats4 farFrom[3];
+  uint32_t nearIsLow;    ///< per axis bit: direction >= 0
+};
+
+Ray MakeRay(const CastFrame& cast, int col, int row) {
+  const Projection& p = cast.frame.projection;
+  const double across = (col + 0.5 - p.cx) / p.d;
+  const double down = -(row + 0.5 - p.cy) * p.cellAspect / p.d;
+  Ray ray{};
+  for (int k = 0; k < 3; ++k) {
+    double direction = cast.rows[0][k] * across + cast.rows[1][k] * down - cast.rows[2][k];
+    // No infinite reciprocal: a tiny tilt instead, far inside the margin.
+    if (std::fabs(direction) < 1e-20) direction = direction < 0.0 ? -1e-20 : 1e-20;
+    const auto inverse = static_cast<float>(1.0 / direction);
+    const bool positive = direction >= 0.0;
+    ray.inverse[k] = Splat(inverse);
+    const float shift = positive ? cast.margin : -cast.margin;
+    ray.nearFrom[k] = Splat(cast.eye[k] + shift);
+    ray.farFrom[k] = Splat(cast.eye[k] - shift);
+    if (positive) ray.nearIsLow |= 1U << k;
+  }
+  return ray;
+}
+
+// What a sample has found so far.
+struct SampleResult {
+  float w = 0.0F;           ///< the depth buffer's cleared value
+  uint32_t faceNumber = 0;  ///< background
+  int64_t triangle = -1;    ///< cull: the latest in scene order
+  int covering = 0;
+};
+
+struct StackEntry {
+  uint32_t ref;
+  float nearestDepth;
+};
+
+// One sample's walk in progress. A walk waits on memory at every step (the
+// next node, a leaf's triangles, their corners), so a worker keeps several
+// walks and steps each in turn: what one step asks for is prefetched and
+// arrives while the others step.
+}  // namespace
+
+struct RayCastStage::Lane {
+  enum class Phase : uint8_t { kWalk, kLeafTriangles, kLeafCorners, kLeafTest, kIdle };
+  Phase phase = Phase::kIdle;
+  int col = 0, row = 0;
+  int top = 0;
+  uint32_t leaf = 0;
+  uint32_t triangles[RayBvh::kLeafTriangles] = {};
+  Ray ray{};
+  SampleResult result;
+  StackEntry stack[kStackEntries] = {};
+};
+
+namespace {
+
+using Lane = RayCastStage::Lane;
+
+class SampleCaster {
+ public:
+  explicit SampleCaster(const CastFrame& cast) : cast_(cast) {}
+
+  void Start(Lane& lane, int col, int row) const {
+    STAT(gRays);
+    lane.phase = Lane::Phase::kWalk;
+    lane.col = col;
+    lane.row = row;
+    lane.ray = MakeRay(cast_, col, row);
+    lane.result = {};
+    lane.top = 0;
+    lane.stack[lane.top++] = {0, 0.0F};
+  }
+
+  // One step of the lane's walk; false once it has its result.
+  bool Step(Lane& lane) const {
+    switch (lane.phase) {
+      case Lane::Phase::kLeafTriangles: {
+        const uint32_t* const ids = cast_.bvh.triangles.data() + RayBvh::LeafFirst(lane.leaf);
+        for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
+          lane.triangles[i] = ids[i];
+          __builtin_prefetch(&cast_.scene.triangles[ids[i]]);
+          if (!cast_.scene.triangleFaces.empty()) __builtin_prefetch(&cast_.scene.triangleFaces[ids[i]]);
+        }
+        lane.phase = Lane::Phase::kLeafCorners;
+        return true;
+      }
+      case Lane::Phase::kLeafCorners:
+        for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
+          const uint32_t t = lane.triangles[i];
+          for (const uint32_t v : cast_.scene.triangles[t].vertices) {
+            __builtin_prefetch(&cast_.scene.verticesWorld[v]);
+          }
+          __builtin_prefetch(&cast_.scene.facePlanesWorld[cast_.scene.TriangleFace(t)]);
+        }
+        lane.phase = Lane::Phase::kLeafTest;
+        return true;
+      case Lane::Phase::kLeafTest:
+        for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
+          TestTriangle(lane.triangles[i], lane.col, lane.row, lane.result);
+        }
+        lane.phase = Lane::Phase::kWalk;
+        return true;
+      case Lane::Phase::kWalk:
+        return Walk(lane);
+      case Lane::Phase::kIdle:
+        break;
+    }
+    return false;
+  }
+
+ private:
+  // Pops to the next entry worth visiting: a node's children are pushed
+  // (their memory requested), a leaf's triangle list requested.
+  bool Walk(Lane& lane) const {
+    const bool nearest = cast_.frame.rule == DepthRule::kNearestWins;
+    const float bestW = nearest ? lane.result.w : 0.0F;
+    while (lane.top > 0) {
+      const StackEntry entry = lane.stack[--lane.top];
+      if (bestW > 0.0F && entry.nearestDepth * bestW > 1.0F + kDepthSlack) continue;
+      if (RayBvh::IsLeaf(entry.ref)) {
+        STAT(gLeaves);
+        lane.leaf = entry.ref;
+        __builtin_prefetch(cast_.bvh.triangles.data() + RayBvh::LeafFirst(entry.ref));
+        lane.phase = Lane::Phase::kLeafTriangles;
+        return true;
+      }
+      // Without depth, nothing stops a walk at the first surface: whole
+      // subtrees facing away (the far side) are dropped by their cones.
+      if (!nearest && FacesAway(cast_.bvh.cones[entry.ref], cast_.frame.eyeWorld, cast_.eyeLength)) continue;
+      STAT(gNodes);
+      lane.top = PushChildren(cast_.bvh.nodes[entry.ref], lane.ray, bestW, lane.stack, lane.top);
+      return true;
+    }
+    lane.phase = Lane::Phase::kIdle;
+    return false;
+  }
+
+  // The children the ray's widened beam reaches, pushed farthest first,
+  // their nodes requested.
+  int PushChildren(const RayBvhNode& node, const Ray& ray, float bestW, StackEntry* stack,
+                   int top) const {
+    const float* const low = &node.low[0][0];
+    const float* const high = &node.high[0][0];
+    Floats4 entry = Splat(0.0F), exit = Splat(INFINITY), depth = Splat(-cast_.depthMargin);
+    for (int k = 0; k < 3; ++k) {
+      const bool nearLow = (ray.nearIsLow >> k & 1U) != 0;
+      const Floats4 nearPlane = Load4((nearLow ? low : high) + 4 * k);
+      const Floats4 farPlane = Load4((nearLow ? high : low) + 4 * k);
+      entry = Max4(entry, (nearPlane - ray.nearFrom[k]) * ray.inverse[k]);
+      exit = Min4(exit, (farPlane - ray.farFrom[k]) * ray.inverse[k]);
+      const bool depthLow = (cast_.depthSide >> k & 1U) != 0;
+      depth += (Load4((depthLow ? low : high) + 4 * k) - Splat(cast_.eye[k])) *
+               Splat(cast_.forward[k]);
+    }
+    const Ints4 hit = entry <= exit;
+    StackEntry found[4];
+    int count = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (hit[i] == 0) continue;
+      if (bestW > 0.0F && depth[i] * bestW > 1.0F + kDepthSlack) continue;
+      // Insertion by depth, farthest first.
+      int at = count++;
+      while (at > 0 && found[at - 1].nearestDepth < depth[i]) {
+        found[at] = found[at - 1];
+        --at;
+      }
+      found[at] = {node.child[i], depth[i]};
+      if (!RayBvh::IsLeaf(node.child[i])) {
+        const auto* const line = reinterpret_cast<const char*>(&cast_.bvh.nodes[node.child[i]]);
+        __builtin_prefetch(line);
+        __builtin_prefetch(line + 64);
+        if (bestW == 0.0F) __builtin_prefetch(&cast_.bvh.cones[node.child[i]]);
+      }
+    }
+    for (int i = 0; i < count; ++i) stack[top++] = found[i];
+    return top;
+  }
+
+  // A triangle decided exactly as the rasterizer decides the sample; facing
+  // (the face plane, another line of memory) only when it covers it.
+  void TestTriangle(uint32_t t, int col, int row, SampleResult& result) const {
+    const Scene& scene = cast_.scene;
+    const ClusterFrame& frame = cast_.frame;
+    STAT(gTris);
+    const auto& v = scene.triangles[t].vertices;
+    const RasterVertex a = ProjectDirect(frame.eyeFromWorld, frame.projection, scene.verticesWorld[v[0]]);
+    const RasterVertex b = ProjectDirect(frame.eyeFromWorld, frame.projection, scene.verticesWorld[v[1]]);
+    const RasterVertex c = ProjectDirect(frame.eyeFromWorld, frame.projection, scene.verticesWorld[v[2]]);
+    // The rasterizer's steps: oriented clockwise on screen, edge functions
+    // with the top-left bias, 1/z from the edge weights (TriangleRasterizer.cpp).
+    const RasterVertex* v0 = &a;
+    const RasterVertex* v1 = &b;
+    const RasterVertex* v2 = &c;
+    int64_t area = (int64_t{v1->x} - v0->x) * (int64_t{v2->y} - v0->y) -
+                   (int64_t{v1->y} - v0->y) * (int64_t{v2->x} - v0->x);
+    if (area == 0) return;
+    if (area < 0) {
+      std::swap(v1, v2);
+      area = -area;
+    }
+    const int64_t sampleX = int64_t{col} * kFixedOne + kFixedHalf;
+    const int64_t sampleY = int64_t{row} * kFixedOne + kFixedHalf;
+    auto edge = [&](const RasterVertex& p, const RasterVertex& q) {
+      const int64_t dx = int64_t{q.x} - p.x;
+      const int64_t dy = int64_t{q.y} - p.y;
+      const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
+      return dx * (sampleY - p.y) - dy * (sampleX - p.x) - (topLeft ? 0 : 1);
+    };
+    const int64_t e12 = edge(*v1, *v2), e20 = edge(*v2, *v0), e01 = edge(*v0, *v1);
+    if ((e12 | e20 | e01) < 0) return;
+    const uint32_t face = scene.TriangleFace(t);
+    if (!scene.facePlanesWorld[face].FacesPoint(frame.eyeWorld)) return;
+    STAT(gFront);
+    ++result.covering;
+    const uint32_t faceNumber = face + 1;
+    if (frame.rule == DepthRule::kCoverOnly || frame.rule == DepthRule::kOverwrite) {
+      if (static_cast<int64_t>(t) < result.triangle) return;
+      result.triangle = t;
+      result.faceNumber = faceNumber;
+      if (frame.rule == DepthRule::kCoverOnly) return;
+    }
+    const float invArea = 1.0F / static_cast<float>(area);
+    const float k0 = v0->w * invArea, k1 = v1->w * invArea, k2 = v2->w * invArea;
+    const float w =
+        static_cast<float>(e12) * k0 + static_cast<float>(e20) * k1 + static_cast<float>(e01) * k2;
+    if (frame.rule == DepthRule::kOverwrite) {
+      result.w = w;
+      return;
+    }
+    if (w > result.w || (w == result.w && faceNumber < result.faceNumber)) {
+      result.w = w;
+      result.faceNumber = faceNumber;
+    }
+  }
+
+  const CastFrame& cast_;
+};
+
+}  // namespace
+
+RayCastStage::RayCastStage() = default;
+RayCastStage::~RayCastStage() = default;
+
+bool RayCastStage::Applies(const Scene& scene, const RayBvh& bvh, const ClusterFrame& frame) {
+  if (bvh.Empty() || !frame.cullBackFaces || !frame.clusterCulling || frame.floatGeometry ||
+      frame.scanline || frame.sink != nullptr ||
+      frame.depthEncoding.format != DepthFormat::kFloatInverseZ || !bvh.BuiltFor(scene)) {
+    return false;
+  }
+  // Every corner within the root box's sphere takes the direct path
+  // (VertexStage.cpp): twice the near distance in front, half the guard band across.
+  const Vec3 centerWorld{(double{bvh.low[0]} + bvh.high[0]) / 2, (double{bvh.low[1]} + bvh.high[1]) / 2,
+                         (double{bvh.low[2]} + bvh.high[2]) / 2};
+  const Vec3 half{(double{bvh.high[0]} - bvh.low[0]) / 2, (double{bvh.high[1]} - bvh.low[1]) / 2,
+                  (double{bvh.high[2]} - bvh.low[2]) / 2};
+  const Vec3 c = TransformPoint(frame.eyeFromWorld, centerWorld);
+  const double r = Length(half) * (1.0 + 1e-9);
+  const double margin = 1e-9 * (Length(c) + r);
+  const double nearZ = 2.0 * -frame.clipPlanes[0].offset;
+  const double depthNear = -c.z - r;
+  if (!(depthNear > nearZ * (1.0 + 1e-9) + margin)) return false;
+  auto reach = [&](double center) {
+    return std::max(std::fabs(center - r), std::fabs(center + r)) / depthNear;
+  };
+  const Projection& proj = frame.projection;
+  const double xLimit = 0.5 * (kClipRangeCells - proj.cx) * (1.0 - 1e-9);
+  const double yLimit = 0.5 * (kClipRangeCells - proj.cy) * (1.0 - 1e-9);
+  return reach(c.x) * proj.d < xLimit && reach(c.y) * (proj.d / proj.cellAspect) < yLimit;
+}
+
+bool RayCastStage::WouldCast(const Scene& scene, int widthCells, int heightCells,
+                             const RenderOptions& options, double fromTrianglesPerSample) {
+  const Method method = options.method;
+  const RenderVariant& variant = options.variant;
+  if ((method != Method::kZBuffer && method != Method::kCull && method != Method::kAuto) ||
+      !options.cullBackFaces || !variant.clusters || !variant.clusterCulling ||
+      variant.floatGeometry || variant.scanline ||
+      variant.depthFormat != DepthFormat::kFloatInverseZ ||
+      variant.hierarchy == HierarchyUse::kNever) {
+    return false;
+  }
+  const SampleGrid grid = FrameSampleGrid(options);
+  // Several samples a cell on one thread go to the sampled rasterizer, which casts no rays.
+  if (grid.Count() > 1 && ResolvedThreadCount(options.threads) <= 1) return false;
+  return TrianglesPerSample(scene, widthCells * grid.across, heightCells * grid.down) >=
+         fromTrianglesPerSample;
+}
+
+int RayCastStage::Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame& frame,
+                       int threads, DepthBuffer& depth, CellBuffer& cells) {
+  const int width = cells.WidthCells(), height = cells.HeightCells();
+  const CastFrame cast(scene, bvh, frame, width, height);
+  const SampleCaster caster(cast);
+  const bool writesDepth = frame.rule != DepthRule::kCoverOnly;
+  threads = std::max(1, std::min(threads, height));
+  coveredPerWorker_.assign(static_cast<size_t>(threads), 0);
+  if (laneCount_ < static_cast<size_t>(threads) * kLanes) {
+    laneCount_ = static_cast<size_t>(threads) * kLanes;
+    lanes_ = std::make_unique<Lane[]>(laneCount_);
+  }
+  nextRow_.store(0);
+  auto castRows = [&](int worker) {
+    auto& faces = cells.FaceNumbers();
+    Lane* const lanes = lanes_.get() + static_cast<size_t>(worker) * kLanes;
+    int covered = 0;
+    int row = nextRow_.fetch_add(1), col = 0;
+    // The next sample of this worker's rows into a lane; false when none is left.
+    auto feed = [&](Lane& lane) {
+      if (col == width) {
+        row = nextRow_.fetch_add(1);
+        col = 0;
+      }
+      if (row >= height) return false;
+      caster.Start(lane, col++, row);
+      return true;
+    };
+    int active = 0;
+    for (int i = 0; i < kLanes; ++i) active += feed(lanes[i]) ? 1 : 0;
+    while (active > 0) {
+      for (int i = 0; i < kLanes; ++i) {
+        Lane& lane = lanes[i];
+        if (lane.phase == Lane::Phase::kIdle || caster.Step(lane)) continue;
+        const SampleResult& result = lane.result;
+        if (result.covering != 0) {
+          covered += result.covering;
+          const size_t index = cells.Index(lane.col, lane.row);
+          faces[index] = result.faceNumber;
+          if (writesDepth && result.faceNumber != 0) depth.At(index) = result.w;
+        }
+        if (!feed(lane)) --active;
+      }
+    }
+    coveredPerWorker_[static_cast<size_t>(worker)] = covered;
+  };
+  if (threads == 1) {
+    castRows(0);
+  } else {
+    if (!pool_ || pool_->Workers() != threads) pool_ = std::make_unique<WorkerPool>(threads);
+    pool_->Run(castRows);
+  }
+  int covered = 0;
+  for (const int c : coveredPerWorker_) covered += c;
+  return covered;
+}
+
+}  // namespace termshade

@@ -1,0 +1,341 @@
+// Issue 9: the ray hierarchy's bounds hold (every corner in its leaf's and
+// every ancestor's box, every triangle in one leaf, every normal in its
+// ancestors' cones, the facing verdicts true for every face), and a frame
+// drawn by casting a ray a sample through it is bit for bit the frame of the
+// plain face-by-face loop (faces, glyphs, depth, faces seen) on the shipped
+// scenes, hard cases and spheres, at several sizes, views, methods and
+// thread counts, including views where the rays do not apply.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "geometry/FitCamera.h"
+#include "geometry/RayBvh.h"
+#include "io/SceneGenerators.h"
+#include "raster/RayCastStage.h"
+#include "raster/Renderer.h"
+#include "support/FrameCompare.h"
+#include "support/TestSupport.h"
+
+namespace termshade {
+namespace {
+
+std::shared_ptr<const RayBvh> Hierarchy(const Scene& scene) {
+  return std::make_shared<const RayBvh>(BuildRayBvh(scene));
+}
+
+struct Slot {
+  uint32_t node;
+  int child;
+};
+
+// Calls leaf(ref, path) for every leaf, path the (node, child) slots from the root down.
+template <typename Leaf>
+void ForEachLeaf(const RayBvh& bvh, Leaf&& leaf) {
+  std::vector<std::vector<Slot>> stack{{}};
+  std::vector<uint32_t> refs{0};
+  while (!refs.empty()) {
+    const uint32_t ref = refs.back();
+    std::vector<Slot> path = std::move(stack.back());
+    refs.pop_back();
+    stack.pop_back();
+    if (RayBvh::IsLeaf(ref)) {
+      leaf(ref, path);
+      continue;
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (bvh.nodes[ref].child[i] == RayBvh::kEmpty) continue;
+      std::vector<Slot> childPath = path;
+      childPath.push_back({ref, i});
+      refs.push_back(bvh.nodes[ref].child[i]);
+      stack.push_back(std::move(childPath));
+    }
+  }
+}
+
+bool InSlot(const RayBvhNode& node, int child, Vec3 p) {
+  const double c[3] = {p.x, p.y, p.z};
+  for (int k = 0; k < 3; ++k) {
+    if (!(c[k] >= node.low[k][child] && c[k] <= node.high[k][child])) return false;
+  }
+  return true;
+}
+
+void ExpectBoundsHold(const Scene& scene, const std::string& what) {
+  const RayBvh bvh = BuildRayBvh(scene);
+  ASSERT_FALSE(bvh.Empty()) << what;
+  ASSERT_EQ(bvh.cones.size(), bvh.nodes.size()) << what;
+  std::vector<int> seen(scene.triangles.size(), 0);
+  ForEachLeaf(bvh, [&](uint32_t ref, const std::vector<Slot>& path) {
+    ASSERT_GE(RayBvh::LeafCount(ref), 1U) << what;
+    ASSERT_LE(RayBvh::LeafCount(ref), RayBvh::kLeafTriangles) << what;
+    for (uint32_t i = 0; i < RayBvh::LeafCount(ref); ++i) {
+      const uint32_t t = bvh.triangles[RayBvh::LeafFirst(ref) + i];
+      ++seen[t];
+      for (const uint32_t v : scene.triangles[t].vertices) {
+        for (const Slot& slot : path) {
+          ASSERT_TRUE(InSlot(bvh.nodes[slot.node], slot.child, scene.verticesWorld[v]))
+              << what << ": triangle " << t << " outside node " << slot.node << " child "
+              << slot.child;
+        }
+      }
+      const FacePlane& plane = scene.facePlanesWorld[scene.TriangleFace(t)];
+      if (Dot(plane.normal, plane.normal) == 0.0) continue;
+      for (const Slot& slot : path) {
+        const RayBvhCone& cone = bvh.cones[slot.node];
+        EXPECT_NE(cone.coneCos, RayBvhCone::kAllAway) << what << ": node " << slot.node;
+        if (!(cone.coneCos > 0.0F) || cone.coneCos == RayBvhCone::kAllAway) continue;
+        const Vec3 axis{cone.axis[0], cone.axis[1], cone.axis[2]};
+        const Vec3 center{cone.center[0], cone.center[1], cone.center[2]};
+        EXPECT_GE(Dot(plane.normal, axis) / Length(axis), cone.coneCos) << what;
+        EXPECT_LE(Dot(plane.normal, center) - plane.offset, cone.heightMax) << what;
+      }
+    }
+  });
+  for (size_t t = 0; t < seen.size(); ++t) {
+    ASSERT_EQ(seen[t], 1) << what << ": triangle " << t << " in " << seen[t] << " leaves";
+  }
+}
+
+// A node's faces, all of them: those of every leaf below it.
+std::vector<uint32_t> FacesBelow(const RayBvh& bvh, const Scene& scene, uint32_t node) {
+  std::vector<uint32_t> faces;
+  std::vector<uint32_t> refs{node};
+  while (!refs.empty()) {
+    const uint32_t ref = refs.back();
+    refs.pop_back();
+    if (RayBvh::IsLeaf(ref)) {
+      for (uint32_t i = 0; i < RayBvh::LeafCount(ref); ++i) {
+        faces.push_back(scene.TriangleFace(bvh.triangles[RayBvh::LeafFirst(ref) + i]));
+      }
+      continue;
+    }
+    for (const uint32_t child : bvh.nodes[ref].child) {
+      if (child != RayBvh::kEmpty) refs.push_back(child);
+    }
+  }
+  return faces;
+}
+
+TEST(RayBvh, EveryCornerAndNormalLiesInsideItsNodes) {
+  for (const std::string& name : GeneratedSceneNames()) {
+    ExpectBoundsHold(PrepareScene(*GenerateScene(name)), name);
+  }
+  ExpectBoundsHold(PrepareScene(GenerateTriangleSphere(20000)), "sphere 20k");
+  for (const double scale : {1e-9, 1e9}) {
+    Mesh sphere = GenerateTriangleSphere(3000);
+    for (Vec3& p : sphere.verticesFile) p = p * scale;
+    ExpectBoundsHold(PrepareScene(sphere), "sphere x" + std::to_string(scale));
+  }
+  const std::array<Vec3, 4> quad{{{0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1}}};
+  ExpectBoundsHold(PrepareScene(test::QuadMesh({quad, quad, quad, quad, quad, quad})),
+                   "coplanar duplicates");  // equal Morton codes: split by count
+}
+
+// Wherever FacesAway says a node's faces all face away, none faces the point.
+TEST(RayBvh, FacingVerdictsHoldForEveryFace) {
+  const std::vector<std::pair<std::string, Scene>> scenes = [] {
+    std::vector<std::pair<std::string, Scene>> named;
+    named.emplace_back("sphere_cone", PrepareScene(*GenerateScene("sphere_cone")));
+    named.emplace_back("beams", PrepareScene(*GenerateScene("beams")));
+    named.emplace_back("sphere 5k", PrepareScene(GenerateTriangleSphere(5000)));
+    return named;
+  }();
+  int away = 0;
+  for (const auto& [name, scene] : scenes) {
+    const RayBvh bvh = BuildRayBvh(scene);
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
+    for (int trial = 0; trial < 40; ++trial) {
+      const Vec3 eye =
+          Vec3{coordinate(random), coordinate(random), coordinate(random)} * scene.radiusModelUnits;
+      const double eyeLength = Length(eye);
+      for (uint32_t node = 0; node < bvh.nodes.size(); ++node) {
+        if (!FacesAway(bvh.cones[node], eye, eyeLength)) continue;
+        ++away;
+        for (const uint32_t face : FacesBelow(bvh, scene, node)) {
+          ASSERT_FALSE(scene.facePlanesWorld[face].FacesPoint(eye))
+              << name << ": node " << node << " face " << face;
+        }
+      }
+    }
+  }
+  EXPECT_GT(away, 0);  // the cones do drop something
+}
+
+TEST(RayCastStage, WouldCastOnlyFramesItServes) {
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(20000));
+  RenderOptions ramp;
+  ramp.method = Method::kAuto;
+  ramp.threads = 2;
+  EXPECT_TRUE(RayCastStage::WouldCast(sphere, 32, 8, ramp));  // 78 a sample: timed against
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 32, 8, ramp,   // render builds from 150
+                                       RayCastStage::kFasterFromTrianglesPerSample));
+  EXPECT_TRUE(RayCastStage::WouldCast(sphere, 16, 8, ramp,  // 156 a sample
+                                      RayCastStage::kFasterFromTrianglesPerSample));
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 60, 8, ramp));   // 42 a sample
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 80, 24, ramp));  // 10 a sample
+  RenderOptions other = ramp;
+  other.method = Method::kPainter;
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 32, 8, other));
+  other = ramp;
+  other.cullBackFaces = false;
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 32, 8, other));
+  other = ramp;
+  other.variant.hierarchy = HierarchyUse::kNever;
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 32, 8, other));
+  other = ramp;
+  other.glyphs = GlyphMode::kAscii;  // 2x4 samples a cell: 39 a sample at 16x4
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 16, 4, other));
+  EXPECT_TRUE(RayCastStage::WouldCast(sphere, 8, 4, other));  // 78 a sample, on threads
+  other.threads = 1;  // the sampled rasterizer draws it, casting no rays
+  EXPECT_FALSE(RayCastStage::WouldCast(sphere, 8, 4, other));
+}
+
+// A hierarchy serves only the triangles it was built over; copies of a scene share it.
+TEST(SceneHierarchy, ServesOnlyItsOwnScene) {
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(2000));
+  const Scene other = PrepareScene(GenerateTriangleSphere(2000));
+  EXPECT_EQ(sphere.hierarchy.Get(sphere), nullptr);
+  const Scene copy = sphere;  // before the attach: shares the slot, not the triangles
+  sphere.hierarchy.Attach(Hierarchy(sphere));
+  ASSERT_NE(sphere.hierarchy.Get(sphere), nullptr);
+  other.hierarchy.Attach(Hierarchy(sphere));  // built for another scene's triangles
+  EXPECT_EQ(other.hierarchy.Get(other), nullptr);
+  EXPECT_EQ(copy.hierarchy.Get(copy), nullptr);  // its own triangle array: not served
+  std::atomic<bool> cancel{true};
+  EXPECT_TRUE(BuildRayBvh(sphere, &cancel).Empty());
+}
+
+const std::vector<test::OrbitView> kViews{{0.3, 1.3, 1.0},  {2.1, 0.4, 1.0},  {4.0, 2.6, 2.5},
+                                          {1.0, 1.5, 0.35}, {5.5, 1.0, 0.12}, {3.0, 0.05, 0.6}};
+
+// Returns how many frames the rays drew.
+int ExpectRayFramesMatch(const std::string& name, const Scene& scene,
+                               const std::vector<int>& sizes) {
+  scene.hierarchy.Attach(Hierarchy(scene));
+  int cast = 0;
+  for (size_t s = 0; s + 1 < sizes.size(); s += 2) {
+    const int width = sizes[s], height = sizes[s + 1];
+    for (const Method method : {Method::kZBuffer, Method::kCull}) {
+      for (const bool keepDepth : {true, false}) {
+        for (const test::OrbitView& view : kViews) {
+          RenderOptions reference;
+          reference.method = method;
+          reference.keepDepth = keepDepth;
+          reference.variant.clusters = false;  // the plain face loop
+          Renderer plain;
+          const test::DrawnFrame expected =
+              test::DrawOrbit(plain, scene, view, width, height, reference);
+          for (const int threads : {1, 2, 3}) {
+            RenderOptions options = reference;
+            options.variant.clusters = true;
+            options.threads = threads;
+            options.threadsFromTriangles = 0;
+            options.variant.hierarchy = HierarchyUse::kAlways;
+            Renderer renderer;
+            const std::string what =
+                name + " " + std::to_string(width) + "x" + std::to_string(height) + " " +
+                std::string(MethodName(method)) + " theta " + std::to_string(view.theta) +
+                " rho x" + std::to_string(view.rhoScale) + " threads " + std::to_string(threads) +
+                (keepDepth ? " depth" : "");
+            for (int repeat = 0; repeat < 2; ++repeat) {  // the second reuses its buffers
+              const test::DrawnFrame actual =
+                  test::DrawOrbit(renderer, scene, view, width, height, options);
+              test::ExpectSameFrame(expected, actual, what);
+              cast += actual.stats.byHierarchy ? 1 : 0;
+            }
+          }
+        }
+      }
+    }
+  }
+  return cast;
+}
+
+TEST(RayCastStage, SmallScenesMatchTheFaceLoop) {
+  for (const std::string& name : GeneratedSceneNames()) {
+    ExpectRayFramesMatch(name, PrepareScene(*GenerateScene(name)), {80, 24, 37, 11});
+  }
+  const std::array<Vec3, 4> quad{{{0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1}}};
+  ExpectRayFramesMatch("coplanar duplicates",
+                             PrepareScene(test::QuadMesh({quad, quad, quad})), {80, 24});
+  ExpectRayFramesMatch("crossing quads",
+                             PrepareScene(test::QuadMesh({
+                                 {{{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1}}},
+                                 {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
+                             })),
+                             {80, 24});
+  for (const double scale : {1e-9, 1e9}) {  // tiny and huge coordinates
+    Mesh sphere = GenerateTriangleSphere(5000);
+    for (Vec3& p : sphere.verticesFile) p = p * scale;
+    ExpectRayFramesMatch("sphere x" + std::to_string(scale), PrepareScene(sphere), {80, 24});
+  }
+  // A floor far larger than the view, reaching behind the eye (clipped: no rays), and a quad on it.
+  ExpectRayFramesMatch(
+      "floor through the eye plane",
+      PrepareScene(test::QuadMesh({
+          {{{-100, -100, -0.5}, {100, -100, -0.5}, {100, 100, -0.5}, {-100, 100, -0.5}}},
+          {{{0, -0.5, -0.5}, {0, 0.5, -0.5}, {0, 0.5, 0.5}, {0, -0.5, 0.5}}},
+      })),
+      {80, 24});
+  Mesh nan = test::QuadMesh({quad});
+  nan.verticesFile.push_back({NAN, 0, 0});
+  nan.AddFace(std::array<uint32_t, 3>{0, 1, 4});
+  nan.AddFace(std::array<uint32_t, 3>{0, 0, 1});  // collinear
+  ExpectRayFramesMatch("nan and collinear", PrepareScene(nan), {80, 24});
+}
+
+// Where both passes may draw (kWhenFaster, enough triangles a sample) the
+// renderer times them against each other: after a key's first frame (the
+// prior's, uncounted) each pass draws two frames in turn, and every frame,
+// whichever pass drew it, is the cluster pass's. Another frame size or
+// another hierarchy (a new scene) starts the timing over.
+TEST(RayCastStage, MeasuredChoiceDrawsBothPassesWithTheSameFrames) {
+  const Scene sphere = PrepareScene(GenerateTriangleSphere(12000));  // 94 a sample at 16x8
+  RenderOptions clusters;
+  clusters.method = Method::kAuto;
+  clusters.threads = 2;
+  clusters.threadsFromTriangles = 0;
+  clusters.variant.hierarchy = HierarchyUse::kNever;
+  RenderOptions measured = clusters;
+  measured.variant.hierarchy = HierarchyUse::kWhenFaster;
+  Renderer reference, chooser;
+  int frame = 0;
+  // The frames cast among the next five at width x height, each checked against the clusters'.
+  auto castOfFive = [&](int width, int height) {
+    int cast = 0;
+    for (int k = 0; k < 5; ++k, ++frame) {
+      const test::OrbitView view{0.2 * frame, 1.2, 1.0};
+      const test::DrawnFrame expected =
+          test::DrawOrbit(reference, sphere, view, width, height, clusters);
+      const test::DrawnFrame actual =
+          test::DrawOrbit(chooser, sphere, view, width, height, measured);
+      test::ExpectSameFrame(expected, actual, "frame " + std::to_string(frame));
+      cast += actual.stats.byHierarchy ? 1 : 0;
+    }
+    return cast;
+  };
+  sphere.hierarchy.Attach(Hierarchy(sphere));
+  // Once timing has begun, five frames of one key cast 0 or 5 times, never 2.
+  EXPECT_EQ(castOfFive(16, 8), 2)
+      << "the prior (clusters) twice and uncounted once, the rays twice";
+  EXPECT_EQ(castOfFive(15, 8), 2) << "another size starts over";
+  sphere.hierarchy.Attach(Hierarchy(sphere));  // a new hierarchy, maybe at the old one's address
+  EXPECT_EQ(castOfFive(15, 8), 2) << "another hierarchy starts over";
+  for (int k = 0; k < 6; ++k) castOfFive(15, 8);  // the chosen pass and its probes
+}
+
+TEST(RayCastStage, Sphere200kMatchesTheFaceLoopAndIsCast) {
+  const int cast = ExpectRayFramesMatch(
+      "sphere 200k", PrepareScene(GenerateTriangleSphere(200000)), {160, 48, 61, 7});
+  EXPECT_GT(cast, 0);  // not only the views where the rays do not apply
+}
+
+}  // namespace
+}  // namespace termshade
