@@ -94,6 +94,7 @@ void ExpectBoundsHold(const Scene& scene, const std::string& what) {
         const Vec3 center{cone.center[0], cone.center[1], cone.center[2]};
         EXPECT_GE(Dot(plane.normal, axis) / Length(axis), cone.coneCos) << what;
         EXPECT_LE(Dot(plane.normal, center) - plane.offset, cone.heightMax) << what;
+        EXPECT_GE(Dot(plane.normal, center) - plane.offset, cone.heightMin) << what;
       }
     }
   });
@@ -137,7 +138,8 @@ TEST(RayBvh, EveryCornerAndNormalLiesInsideItsNodes) {
                    "coplanar duplicates");  // equal Morton codes: split by count
 }
 
-// Wherever FacesAway says a node's faces all face away, none faces the point.
+// Wherever ConeFacing says a node's faces all face away, none faces the
+// point; where it says all face it, every one does.
 TEST(RayBvh, FacingVerdictsHoldForEveryFace) {
   const std::vector<std::pair<std::string, Scene>> scenes = [] {
     std::vector<std::pair<std::string, Scene>> named;
@@ -146,7 +148,7 @@ TEST(RayBvh, FacingVerdictsHoldForEveryFace) {
     named.emplace_back("sphere 5k", PrepareScene(GenerateTriangleSphere(5000)));
     return named;
   }();
-  int away = 0;
+  int away = 0, toward = 0;
   for (const auto& [name, scene] : scenes) {
     const RayBvh bvh = BuildRayBvh(scene);
     std::mt19937 random(9);
@@ -156,16 +158,18 @@ TEST(RayBvh, FacingVerdictsHoldForEveryFace) {
           Vec3{coordinate(random), coordinate(random), coordinate(random)} * scene.radiusModelUnits;
       const double eyeLength = Length(eye);
       for (uint32_t node = 0; node < bvh.nodes.size(); ++node) {
-        if (!FacesAway(bvh.cones[node], eye, eyeLength)) continue;
-        ++away;
+        const ClusterFacing facing = ConeFacing(bvh.cones[node], eye, eyeLength);
+        if (facing == ClusterFacing::kMixed) continue;
+        (facing == ClusterFacing::kAway ? away : toward) += 1;
         for (const uint32_t face : FacesBelow(bvh, scene, node)) {
-          ASSERT_FALSE(scene.facePlanesWorld[face].FacesPoint(eye))
+          ASSERT_EQ(scene.facePlanesWorld[face].FacesPoint(eye), facing == ClusterFacing::kToward)
               << name << ": node " << node << " face " << face;
         }
       }
     }
   }
-  EXPECT_GT(away, 0);  // the cones do drop something
+  EXPECT_GT(away, 0);  // the cones do decide something
+  EXPECT_GT(toward, 0);
 }
 
 TEST(RayCastStage, WouldCastOnlyFramesItServes) {
@@ -217,7 +221,7 @@ const std::vector<test::OrbitView> kViews{{0.3, 1.3, 1.0},  {2.1, 0.4, 1.0},  {4
 
 // Returns how many frames the rays drew.
 int ExpectRayFramesMatch(const std::string& name, const Scene& scene,
-                               const std::vector<int>& sizes) {
+                         const std::vector<int>& sizes) {
   scene.hierarchy.Attach(Hierarchy(scene));
   int cast = 0;
   for (size_t s = 0; s + 1 < sizes.size(); s += 2) {
@@ -263,14 +267,14 @@ TEST(RayCastStage, SmallScenesMatchTheFaceLoop) {
     ExpectRayFramesMatch(name, PrepareScene(*GenerateScene(name)), {80, 24, 37, 11});
   }
   const std::array<Vec3, 4> quad{{{0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1}}};
-  ExpectRayFramesMatch("coplanar duplicates",
-                             PrepareScene(test::QuadMesh({quad, quad, quad})), {80, 24});
+  ExpectRayFramesMatch("coplanar duplicates", PrepareScene(test::QuadMesh({quad, quad, quad})),
+                       {80, 24});
   ExpectRayFramesMatch("crossing quads",
-                             PrepareScene(test::QuadMesh({
-                                 {{{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1}}},
-                                 {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
-                             })),
-                             {80, 24});
+                       PrepareScene(test::QuadMesh({
+                           {{{-1, -1, -1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, -1}}},
+                           {{{-1, -1, 1}, {-1, 1, 1}, {1, 1, -1}, {1, -1, -1}}},
+                       })),
+                       {80, 24});
   for (const double scale : {1e-9, 1e9}) {  // tiny and huge coordinates
     Mesh sphere = GenerateTriangleSphere(5000);
     for (Vec3& p : sphere.verticesFile) p = p * scale;
@@ -332,8 +336,8 @@ TEST(RayCastStage, MeasuredChoiceDrawsBothPassesWithTheSameFrames) {
 }
 
 TEST(RayCastStage, Sphere200kMatchesTheFaceLoopAndIsCast) {
-  const int cast = ExpectRayFramesMatch(
-      "sphere 200k", PrepareScene(GenerateTriangleSphere(200000)), {160, 48, 61, 7});
+  const int cast = ExpectRayFramesMatch("sphere 200k", PrepareScene(GenerateTriangleSphere(200000)),
+                                        {160, 48, 61, 7});
   EXPECT_GT(cast, 0);  // not only the views where the rays do not apply
 }
 

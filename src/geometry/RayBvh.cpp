@@ -61,10 +61,13 @@ struct Cone {
   Vec3 axis;
   double angle = 0.0;
   Vec3 center;  ///< as stored (float)
+  double heightMin = INFINITY;
   double heightMax = -INFINITY;
 };
 
-Vec3 StoredVector(const float (&v)[3]) { return {v[0], v[1], v[2]}; }
+Vec3 StoredVector(const float (&v)[3]) {
+  return {v[0], v[1], v[2]};
+}
 
 // A cone's axis and center as stored (rounded to float first); usable
 // stays false when the axis is too short to point anywhere.
@@ -91,9 +94,10 @@ Cone StartCone(Vec3 axisSum, const Box& box, RayBvhCone& stored) {
 
 // The cone's half-angle and heights, measured against its stored axis and
 // center, stored widened past their rounding (too wide: not usable).
-void FinishCone(Cone& cone, double widest, double heightMax, const Box& box,
+void FinishCone(Cone& cone, double widest, double heightMin, double heightMax, const Box& box,
                 RayBvhCone& stored) {
   cone.angle = widest + 1e-6;
+  cone.heightMin = heightMin;
   cone.heightMax = heightMax;
   if (!cone.usable || !(cone.angle < 1.5)) {
     cone.usable = false;
@@ -103,7 +107,9 @@ void FinishCone(Cone& cone, double widest, double heightMax, const Box& box,
   const double diagonal =
       Length(Vec3{box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2]});
   stored.coneCos = Down(std::cos(cone.angle) - 1e-6);
-  stored.heightMax = Up(heightMax + 1e-6 * diagonal + 1e-9 * Length(cone.center));
+  const double slack = 1e-6 * diagonal + 1e-9 * Length(cone.center);
+  stored.heightMin = Down(heightMin - slack);
+  stored.heightMax = Up(heightMax + slack);
 }
 
 struct Keyed {
@@ -124,9 +130,9 @@ std::vector<Keyed> SortedByMorton(const Scene& scene, const Box& sceneBox) {
   RunRangesOnLoadThreads(LoadThreadCount(count), count, [&](int, size_t begin, size_t end) {
     for (size_t t = begin; t < end; ++t) {
       const auto& v = scene.triangles[t].vertices;
-      const Vec3 c = (scene.verticesWorld[v[0]] + scene.verticesWorld[v[1]] +
-                      scene.verticesWorld[v[2]]) *
-                     (1.0 / 3.0);
+      const Vec3 c =
+          (scene.verticesWorld[v[0]] + scene.verticesWorld[v[1]] + scene.verticesWorld[v[2]]) *
+          (1.0 / 3.0);
       const double at[3] = {c.x, c.y, c.z};
       uint64_t code = 0;
       for (int k = 0; k < 3; ++k) {
@@ -153,8 +159,7 @@ std::vector<Keyed> SortedByMorton(const Scene& scene, const Box& sceneBox) {
 
 class Builder {
  public:
-  Builder(const Scene& scene, RayBvh& bvh, std::vector<Keyed> keys,
-          const std::atomic<bool>* cancel)
+  Builder(const Scene& scene, RayBvh& bvh, std::vector<Keyed> keys, const std::atomic<bool>* cancel)
       : scene_(scene), bvh_(bvh), keys_(std::move(keys)), cancel_(cancel) {}
 
   struct Built {
@@ -167,7 +172,8 @@ class Builder {
   // node of up to four children (two Morton splits).
   Built Build(size_t begin, size_t end) {
     if (end - begin <= RayBvh::kLeafTriangles) return Leaf(begin, end);
-    if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed)) return {RayBvh::kEmpty, {}, {}};
+    if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed))
+      return {RayBvh::kEmpty, {}, {}};
     const auto node = static_cast<uint32_t>(bvh_.nodes.size());
     bvh_.nodes.emplace_back();
     std::pair<size_t, size_t> parts[4];
@@ -211,13 +217,14 @@ class Builder {
     Box box;
     const auto first = static_cast<uint32_t>(begin);
     Vec3 normalSum{};
-    bool anyFacing = false;
+    bool anyFacing = false, anyDegenerate = false;
     for (size_t i = begin; i < end; ++i) {
       const uint32_t t = keys_[i].triangle;
       bvh_.triangles[i] = t;
       for (const uint32_t v : scene_.triangles[t].vertices) box.Add(scene_.verticesWorld[v]);
       const Vec3 n = scene_.facePlanesWorld[scene_.TriangleFace(t)].normal;
       anyFacing = anyFacing || Dot(n, n) != 0.0;
+      anyDegenerate = anyDegenerate || Dot(n, n) == 0.0;
       normalSum = normalSum + n;
     }
     Built built{RayBvh::LeafRef(first, static_cast<uint32_t>(end - begin)), box, {}};
@@ -225,16 +232,20 @@ class Builder {
     RayBvhCone stored{};
     built.cone = StartCone(normalSum, box, stored);
     if (!built.cone.usable) return built;
-    double widest = 0.0, heightMax = -INFINITY;
+    double widest = 0.0, heightMin = INFINITY, heightMax = -INFINITY;
     const Vec3 center = built.cone.center;
     for (size_t i = begin; i < end; ++i) {
       const FacePlane& plane = scene_.facePlanesWorld[scene_.TriangleFace(keys_[i].triangle)];
       if (Dot(plane.normal, plane.normal) == 0.0) continue;
-      widest = std::max(widest, std::acos(std::clamp(Dot(plane.normal, built.cone.axis), -1.0, 1.0)));
+      widest =
+          std::max(widest, std::acos(std::clamp(Dot(plane.normal, built.cone.axis), -1.0, 1.0)));
       const double slack = 1e-9 * (Length(center) + std::fabs(plane.offset));
-      heightMax = std::max(heightMax, Dot(plane.normal, center) - plane.offset + slack);
+      const double height = Dot(plane.normal, center) - plane.offset;
+      heightMin = std::min(heightMin, height - slack);
+      heightMax = std::max(heightMax, height + slack);
     }
-    FinishCone(built.cone, widest, heightMax, box, stored);
+    // A degenerate face never faces a point: never "every face toward" then.
+    FinishCone(built.cone, widest, anyDegenerate ? -INFINITY : heightMin, heightMax, box, stored);
     return built;
   }
 
@@ -242,8 +253,9 @@ class Builder {
   // axes' angle from it, heights moved to its center (|n| = 1).
   static Cone MergeCones(const Cone* cones, int count, const Box& box, RayBvhCone& stored) {
     Vec3 axisSum{};
-    bool allAway = true, anyUnusable = false;
+    bool allAway = true, anyUnusable = false, anyDegenerate = false;
     for (int i = 0; i < count; ++i) {
+      anyDegenerate = anyDegenerate || cones[i].allAway || cones[i].heightMin == -INFINITY;
       if (cones[i].allAway) continue;
       allAway = false;
       anyUnusable = anyUnusable || !cones[i].usable;
@@ -255,19 +267,20 @@ class Builder {
     }
     Cone cone = StartCone(axisSum, box, stored);
     if (anyUnusable) cone.usable = false;
-    double widest = 0.0, heightMax = -INFINITY;
+    double widest = 0.0, heightMin = INFINITY, heightMax = -INFINITY;
     if (cone.usable) {
       for (int i = 0; i < count; ++i) {
         const Cone& child = cones[i];
         if (child.allAway) continue;
-        widest = std::max(widest, std::acos(std::clamp(Dot(cone.axis, child.axis), -1.0, 1.0)) +
-                                      child.angle);
+        widest = std::max(
+            widest, std::acos(std::clamp(Dot(cone.axis, child.axis), -1.0, 1.0)) + child.angle);
         const double shift =
             Length(cone.center - child.center) * (1.0 + 1e-12) + 1e-9 * Length(cone.center);
+        heightMin = std::min(heightMin, child.heightMin - shift);
         heightMax = std::max(heightMax, child.heightMax + shift);
       }
     }
-    FinishCone(cone, widest, heightMax, box, stored);
+    FinishCone(cone, widest, anyDegenerate ? -INFINITY : heightMin, heightMax, box, stored);
     return cone;
   }
 
@@ -291,23 +304,32 @@ class Builder {
 
 }  // namespace
 
-bool FacesAway(const RayBvhCone& cone, Vec3 pWorld, double pLength) {
-  if (cone.coneCos == RayBvhCone::kAllAway) return true;
-  if (!(cone.coneCos > 0.0F)) return false;
+ClusterFacing ConeFacing(const RayBvhCone& cone, Vec3 pWorld, double pLength) {
+  if (cone.coneCos == RayBvhCone::kAllAway) return ClusterFacing::kAway;
+  if (!(cone.coneCos > 0.0F)) return ClusterFacing::kMixed;
   // As FacingOf (Clusters.cpp): n . p - offset = n . v + (n . c - offset)
-  // with v = p - c; over the cone, n . v <= (a . v) cos t + |a x v| sin t
-  // when v lies outside it. The stored axis is unit within 1e-7 and |a x v|
-  // is taken from |v|^2 - (a . v)^2: both widened by their error.
+  // with v = p - c; over a cone of half-angle t about a, at angle phi from
+  // v: max n . v = (a . v) cos t + |a x v| sin t when phi > t, min n . v =
+  // (a . v) cos t - |a x v| sin t when phi + t < 90 degrees. The stored
+  // axis is unit within 1e-7 and |a x v| is taken from |v|^2 - (a . v)^2:
+  // both widened by their error.
   const Vec3 v{pWorld.x - cone.center[0], pWorld.y - cone.center[1], pWorld.z - cone.center[2]};
   const double lengthSquared = Dot(v, v);
   const double length = std::sqrt(lengthSquared);
   const double along = cone.axis[0] * v.x + cone.axis[1] * v.y + cone.axis[2] * v.z;
   const double coneCos = cone.coneCos;
-  if (!(along < length * coneCos - 1e-6 * length)) return false;
   const double across = std::sqrt(std::max(0.0, lengthSquared - along * along)) + 1e-7 * length;
   const double sinT = std::sqrt(1.0 - coneCos * coneCos);
-  const double margin = 1e-6 * (length + std::fabs(double{cone.heightMax})) + 1e-9 * (2.0 * pLength + length);
-  return along * coneCos + across * sinT + cone.heightMax < -margin;
+  const double margin = 1e-6 * (length + std::fabs(double{cone.heightMax}) +
+                                (std::isfinite(cone.heightMin) ? std::fabs(cone.heightMin) : 0.0)) +
+                        1e-9 * (2.0 * pLength + length);
+  if (along < length * coneCos - 1e-6 * length &&
+      along * coneCos + across * sinT + cone.heightMax < -margin) {
+    return ClusterFacing::kAway;
+  }
+  const double least = along * coneCos - across * sinT;
+  if (least > 1e-6 * length && least + cone.heightMin > margin) return ClusterFacing::kToward;
+  return ClusterFacing::kMixed;
 }
 
 bool RayBvh::BuiltFor(const Scene& scene) const {
@@ -340,7 +362,7 @@ RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel) {
   Builder builder(scene, bvh, std::move(keys), cancel);
   if (count <= RayBvh::kLeafTriangles) {
     bvh.nodes.emplace_back();
-    bvh.cones.push_back({{0, 0, 0}, {0, 0, 0}, RayBvhCone::kNoCone, 0.0F});
+    bvh.cones.push_back({{0, 0, 0}, {0, 0, 0}, RayBvhCone::kNoCone, 0.0F, 0.0F});
     const Builder::Built leaf = builder.Build(0, count);
     RayBvhNode& root = bvh.nodes[0];
     for (int i = 0; i < 4; ++i) {

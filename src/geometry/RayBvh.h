@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/Clusters.h"
 #include "geometry/Vec3.h"
 
 namespace termshade {
@@ -23,21 +24,23 @@ struct alignas(16) RayBvhNode {
 };
 
 /// The normal cone of a node's faces: every face's unit normal n has
-/// n . axis / |axis| >= coneCos, and n . center - offset <= heightMax (its
-/// plane n . p = offset). Floats; the bounds hold for them as stored.
+/// n . axis / |axis| >= coneCos, and n . center - offset lies in [heightMin,
+/// heightMax] (its plane n . p = offset). Floats; the bounds hold for them
+/// as stored.
 struct RayBvhCone {
   float center[3];
   float axis[3];    ///< unit within float rounding
   float coneCos;    ///< kNoCone: none usable; kAllAway: no face can face any point
-  float heightMax;  ///< widened past the rounding of the stored center and axis
+  float heightMin;  ///< -inf when a face is degenerate (such a face never faces a point)
+  float heightMax;  ///< both widened past the rounding of the stored center and axis
   static constexpr float kNoCone = -2.0F;
   static constexpr float kAllAway = 2.0F;
 };
 
-/// True only when every face of the cone's node faces away from pWorld
-/// (FacePlane::FacesPoint false for each; conservative, rounding included);
-/// pLength = |pWorld|.
-bool FacesAway(const RayBvhCone& cone, Vec3 pWorld, double pLength);
+/// Which way the faces of the cone's node turn as seen from pWorld:
+/// conservative, so kAway and kToward hold for every face
+/// (FacePlane::FacesPoint, rounding included); pLength = |pWorld|.
+ClusterFacing ConeFacing(const RayBvhCone& cone, Vec3 pWorld, double pLength);
 
 /// A four-wide bounding-volume hierarchy over a scene's triangles for
 /// finding, per sample, the triangles that may cover it (RayCastStage).

@@ -1,6 +1,7 @@
 #include "raster/RayCastStage.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -8,12 +9,6 @@
 #include "raster/FixedPoint.h"
 #include "raster/VertexStage.h"
 
-#ifdef RAYCAST_STATS
-long gNodes=0,gLeaves=0,gTris=0,gFront=0,gRays=0;
-#define STAT(x) ++x
-#else
-#define STAT(x)
-#endif
 namespace termshade {
 namespace {
 
@@ -26,10 +21,16 @@ Floats4 Load4(const float* p) {
   return v;
 }
 
-Floats4 Splat(float x) { return Floats4{x, x, x, x}; }
+Floats4 Splat(float x) {
+  return Floats4{x, x, x, x};
+}
 
-Floats4 Min4(Floats4 a, Floats4 b) { return a < b ? a : b; }
-Floats4 Max4(Floats4 a, Floats4 b) { return a > b ? a : b; }
+Floats4 Min4(Floats4 a, Floats4 b) {
+  return a < b ? a : b;
+}
+Floats4 Max4(Floats4 a, Floats4 b) {
+  return a > b ? a : b;
+}
 
 // Snapping moves a corner 1/512 cell at most; the projection's own rounding
 // is far below the rest.
@@ -37,7 +38,9 @@ constexpr double kSnapCells = 1.0 / 512.0 + 1e-6;
 // Relative slack of a depth bound: float 1/z of a corner, and the
 // interpolation's three roundings (SPEC 5: 1/z interpolated in float).
 constexpr float kDepthSlack = 1e-5F;
-constexpr int kStackEntries = 512;  // a tree is at most about 100 levels deep
+// A tree is at most 91 levels deep (63 Morton bits, then halving up to 2^28
+// triangles), three entries a level and four pushed at once.
+constexpr int kStackEntries = 512;
 
 // What a frame fixes for every ray.
 struct CastFrame {
@@ -69,7 +72,8 @@ struct CastFrame {
       if (forward[k] >= 0.0F) depthSide |= 1U << k;
       farDepth += std::max(-rows[2][k] * (bvh.low[k] - eyeWorld[k]),
                            -rows[2][k] * (bvh.high[k] - eyeWorld[k]));
-      boxReach = std::max({boxReach, std::fabs(double{bvh.low[k]}), std::fabs(double{bvh.high[k]})});
+      boxReach =
+          std::max({boxReach, std::fabs(double{bvh.low[k]}), std::fabs(double{bvh.high[k]})});
       eyeReach = std::max(eyeReach, std::fabs(eyeWorld[k]));
     }
     // The beam of a sample's 1/512-cell square reaches a radius of
@@ -89,10 +93,10 @@ struct CastFrame {
 
 // One sample's ray: its direction's reciprocals and the widened planes' offsets.
 struct Ray {
-  Floats4 inverse[3];    ///< 1 / direction, per axis, splat
-  Floats4 nearFrom[3];   ///< eye -+ margin: where the near planes' distances are taken from
+  Floats4 inverse[3];   ///< 1 / direction, per axis, splat
+  Floats4 nearFrom[3];  ///< eye -+ margin: where the near planes' distances are taken from
   Floats4 farFrom[3];
-  uint32_t nearIsLow;    ///< per axis bit: direction >= 0
+  uint32_t nearIsLow;  ///< per axis bit: direction >= 0
 };
 
 Ray MakeRay(const CastFrame& cast, int col, int row) {
@@ -125,7 +129,8 @@ struct SampleResult {
 
 struct StackEntry {
   uint32_t ref;
-  float nearestDepth;
+  float nearestDepth;  ///< no corner below it is nearer (eye depth, world units)
+  uint32_t allFront;   ///< a cone above showed every face below it front-facing
 };
 
 // One sample's walk in progress. A walk waits on memory at every step (the
@@ -140,6 +145,7 @@ struct RayCastStage::Lane {
   int col = 0, row = 0;
   int top = 0;
   uint32_t leaf = 0;
+  uint32_t leafAllFront = 0;
   uint32_t triangles[RayBvh::kLeafTriangles] = {};
   Ray ray{};
   SampleResult result;
@@ -155,14 +161,13 @@ class SampleCaster {
   explicit SampleCaster(const CastFrame& cast) : cast_(cast) {}
 
   void Start(Lane& lane, int col, int row) const {
-    STAT(gRays);
     lane.phase = Lane::Phase::kWalk;
     lane.col = col;
     lane.row = row;
     lane.ray = MakeRay(cast_, col, row);
     lane.result = {};
     lane.top = 0;
-    lane.stack[lane.top++] = {0, 0.0F};
+    lane.stack[lane.top++] = {0, 0.0F, 0};
   }
 
   // One step of the lane's walk; false once it has its result.
@@ -173,7 +178,9 @@ class SampleCaster {
         for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
           lane.triangles[i] = ids[i];
           __builtin_prefetch(&cast_.scene.triangles[ids[i]]);
-          if (!cast_.scene.triangleFaces.empty()) __builtin_prefetch(&cast_.scene.triangleFaces[ids[i]]);
+          if (lane.leafAllFront == 0 && !cast_.scene.triangleFaces.empty()) {
+            __builtin_prefetch(&cast_.scene.triangleFaces[ids[i]]);
+          }
         }
         lane.phase = Lane::Phase::kLeafCorners;
         return true;
@@ -184,14 +191,14 @@ class SampleCaster {
           for (const uint32_t v : cast_.scene.triangles[t].vertices) {
             __builtin_prefetch(&cast_.scene.verticesWorld[v]);
           }
-          __builtin_prefetch(&cast_.scene.facePlanesWorld[cast_.scene.TriangleFace(t)]);
+          if (lane.leafAllFront == 0) {
+            __builtin_prefetch(&cast_.scene.facePlanesWorld[cast_.scene.TriangleFace(t)]);
+          }
         }
         lane.phase = Lane::Phase::kLeafTest;
         return true;
       case Lane::Phase::kLeafTest:
-        for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
-          TestTriangle(lane.triangles[i], lane.col, lane.row, lane.result);
-        }
+        TestLeaf(lane);
         lane.phase = Lane::Phase::kWalk;
         return true;
       case Lane::Phase::kWalk:
@@ -212,17 +219,23 @@ class SampleCaster {
       const StackEntry entry = lane.stack[--lane.top];
       if (bestW > 0.0F && entry.nearestDepth * bestW > 1.0F + kDepthSlack) continue;
       if (RayBvh::IsLeaf(entry.ref)) {
-        STAT(gLeaves);
         lane.leaf = entry.ref;
+        lane.leafAllFront = entry.allFront;
         __builtin_prefetch(cast_.bvh.triangles.data() + RayBvh::LeafFirst(entry.ref));
         lane.phase = Lane::Phase::kLeafTriangles;
         return true;
       }
-      // Without depth, nothing stops a walk at the first surface: whole
-      // subtrees facing away (the far side) are dropped by their cones.
-      if (!nearest && FacesAway(cast_.bvh.cones[entry.ref], cast_.frame.eyeWorld, cast_.eyeLength)) continue;
-      STAT(gNodes);
-      lane.top = PushChildren(cast_.bvh.nodes[entry.ref], lane.ray, bestW, lane.stack, lane.top);
+      // Subtrees facing away (the far side) are dropped by their cones;
+      // below a cone facing the eye no face is tested for facing.
+      uint32_t allFront = entry.allFront;
+      if (allFront == 0) {
+        const ClusterFacing facing =
+            ConeFacing(cast_.bvh.cones[entry.ref], cast_.frame.eyeWorld, cast_.eyeLength);
+        if (facing == ClusterFacing::kAway) continue;
+        allFront = facing == ClusterFacing::kToward ? 1 : 0;
+      }
+      lane.top =
+          PushChildren(cast_.bvh.nodes[entry.ref], lane.ray, bestW, allFront, lane.stack, lane.top);
       return true;
     }
     lane.phase = Lane::Phase::kIdle;
@@ -231,8 +244,8 @@ class SampleCaster {
 
   // The children the ray's widened beam reaches, pushed farthest first,
   // their nodes requested.
-  int PushChildren(const RayBvhNode& node, const Ray& ray, float bestW, StackEntry* stack,
-                   int top) const {
+  int PushChildren(const RayBvhNode& node, const Ray& ray, float bestW, uint32_t allFront,
+                   StackEntry* stack, int top) const {
     const float* const low = &node.low[0][0];
     const float* const high = &node.high[0][0];
     Floats4 entry = Splat(0.0F), exit = Splat(INFINITY), depth = Splat(-cast_.depthMargin);
@@ -243,43 +256,67 @@ class SampleCaster {
       entry = Max4(entry, (nearPlane - ray.nearFrom[k]) * ray.inverse[k]);
       exit = Min4(exit, (farPlane - ray.farFrom[k]) * ray.inverse[k]);
       const bool depthLow = (cast_.depthSide >> k & 1U) != 0;
-      depth += (Load4((depthLow ? low : high) + 4 * k) - Splat(cast_.eye[k])) *
-               Splat(cast_.forward[k]);
+      depth +=
+          (Load4((depthLow ? low : high) + 4 * k) - Splat(cast_.eye[k])) * Splat(cast_.forward[k]);
     }
-    const Ints4 hit = entry <= exit;
-    StackEntry found[4];
+    Ints4 keep = entry <= exit;
+    if (bestW > 0.0F) keep &= depth * Splat(bestW) <= Splat(1.0F + kDepthSlack);
+    const Ints4 bits = keep & Ints4{1, 2, 4, 8};
+    unsigned mask = static_cast<unsigned>(bits[0] | bits[1] | bits[2] | bits[3]);
+    // Nearest first off the stack: pushed in order of depth, farthest first.
+    StackEntry found[4] = {};
     int count = 0;
-    for (int i = 0; i < 4; ++i) {
-      if (hit[i] == 0) continue;
-      if (bestW > 0.0F && depth[i] * bestW > 1.0F + kDepthSlack) continue;
-      // Insertion by depth, farthest first.
+    for (; mask != 0; mask &= mask - 1) {
+      const int i = std::countr_zero(mask);
       int at = count++;
       while (at > 0 && found[at - 1].nearestDepth < depth[i]) {
         found[at] = found[at - 1];
         --at;
       }
-      found[at] = {node.child[i], depth[i]};
+      found[at] = {node.child[i], depth[i], allFront};
       if (!RayBvh::IsLeaf(node.child[i])) {
         const auto* const line = reinterpret_cast<const char*>(&cast_.bvh.nodes[node.child[i]]);
         __builtin_prefetch(line);
         __builtin_prefetch(line + 64);
-        if (bestW == 0.0F) __builtin_prefetch(&cast_.bvh.cones[node.child[i]]);
+        if (allFront == 0) __builtin_prefetch(&cast_.bvh.cones[node.child[i]]);
       }
     }
-    for (int i = 0; i < count; ++i) stack[top++] = found[i];
-    return top;
+    std::memcpy(stack + top, found, sizeof found);  // the stack keeps room for four more
+    return top + count;
+  }
+
+  // The leaf's triangles, each corner projected once (a leaf's triangles
+  // share most of their corners).
+  void TestLeaf(Lane& lane) const {
+    const Scene& scene = cast_.scene;
+    constexpr uint32_t kCorners = 3 * RayBvh::kLeafTriangles;
+    uint32_t known[kCorners];
+    RasterVertex projected[kCorners];
+    uint32_t knownCount = 0;
+    auto corner = [&](uint32_t v) -> const RasterVertex& {
+      for (uint32_t k = 0; k < knownCount; ++k) {
+        if (known[k] == v) return projected[k];
+      }
+      known[knownCount] = v;
+      projected[knownCount] =
+          ProjectDirect(cast_.frame.eyeFromWorld, cast_.frame.projection, scene.verticesWorld[v]);
+      return projected[knownCount++];
+    };
+    for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
+      const uint32_t t = lane.triangles[i];
+      const auto& v = scene.triangles[t].vertices;
+      TestTriangle(t, corner(v[0]), corner(v[1]), corner(v[2]), lane);
+    }
   }
 
   // A triangle decided exactly as the rasterizer decides the sample; facing
   // (the face plane, another line of memory) only when it covers it.
-  void TestTriangle(uint32_t t, int col, int row, SampleResult& result) const {
+  void TestTriangle(uint32_t t, const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                    Lane& lane) const {
     const Scene& scene = cast_.scene;
     const ClusterFrame& frame = cast_.frame;
-    STAT(gTris);
-    const auto& v = scene.triangles[t].vertices;
-    const RasterVertex a = ProjectDirect(frame.eyeFromWorld, frame.projection, scene.verticesWorld[v[0]]);
-    const RasterVertex b = ProjectDirect(frame.eyeFromWorld, frame.projection, scene.verticesWorld[v[1]]);
-    const RasterVertex c = ProjectDirect(frame.eyeFromWorld, frame.projection, scene.verticesWorld[v[2]]);
+    const int col = lane.col, row = lane.row;
+    SampleResult& result = lane.result;
     // The rasterizer's steps: oriented clockwise on screen, edge functions
     // with the top-left bias, 1/z from the edge weights (TriangleRasterizer.cpp).
     const RasterVertex* v0 = &a;
@@ -303,8 +340,7 @@ class SampleCaster {
     const int64_t e12 = edge(*v1, *v2), e20 = edge(*v2, *v0), e01 = edge(*v0, *v1);
     if ((e12 | e20 | e01) < 0) return;
     const uint32_t face = scene.TriangleFace(t);
-    if (!scene.facePlanesWorld[face].FacesPoint(frame.eyeWorld)) return;
-    STAT(gFront);
+    if (lane.leafAllFront == 0 && !scene.facePlanesWorld[face].FacesPoint(frame.eyeWorld)) return;
     ++result.covering;
     const uint32_t faceNumber = face + 1;
     if (frame.rule == DepthRule::kCoverOnly || frame.rule == DepthRule::kOverwrite) {
@@ -343,7 +379,8 @@ bool RayCastStage::Applies(const Scene& scene, const RayBvh& bvh, const ClusterF
   }
   // Every corner within the root box's sphere takes the direct path
   // (VertexStage.cpp): twice the near distance in front, half the guard band across.
-  const Vec3 centerWorld{(double{bvh.low[0]} + bvh.high[0]) / 2, (double{bvh.low[1]} + bvh.high[1]) / 2,
+  const Vec3 centerWorld{(double{bvh.low[0]} + bvh.high[0]) / 2,
+                         (double{bvh.low[1]} + bvh.high[1]) / 2,
                          (double{bvh.low[2]} + bvh.high[2]) / 2};
   const Vec3 half{(double{bvh.high[0]} - bvh.low[0]) / 2, (double{bvh.high[1]} - bvh.low[1]) / 2,
                   (double{bvh.high[2]} - bvh.low[2]) / 2};

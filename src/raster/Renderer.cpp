@@ -372,13 +372,12 @@ int Renderer::DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const 
   }
   const int width = cells.WidthCells(), height = cells.HeightCells();
   const SurfaceChoiceKey key{choiceHierarchySerial_, width, height, threads};
-  const SurfacePass prior = RayCastStage::Faster(scene, width, height) ? SurfacePass::kHierarchy
-                                                                       : SurfacePass::kClusters;
+  const SurfacePass prior =
+      RayCastStage::Faster(scene, width, height) ? SurfacePass::kHierarchy : SurfacePass::kClusters;
   drewByHierarchy_ = passChoice_.Pick(key, prior) == SurfacePass::kHierarchy;
   const auto start = std::chrono::steady_clock::now();
-  const int drawn = drewByHierarchy_
-                        ? rayCastStage_.Draw(scene, *bvh, frame, threads, depth, cells)
-                        : clusterStage_.Draw(scene, frame, threads, depth, cells);
+  const int drawn = drewByHierarchy_ ? rayCastStage_.Draw(scene, *bvh, frame, threads, depth, cells)
+                                     : clusterStage_.Draw(scene, frame, threads, depth, cells);
   passChoice_.Record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   return drawn;

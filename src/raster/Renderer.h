@@ -25,7 +25,8 @@ namespace termshade {
 struct RenderStats {
   int trianglesDrawn = 0;  ///< triangles rasterized: facing the eye (or culling off), near a sample
   int facesVisible = 0;    ///< distinct faces seen in at least one cell
-  bool byHierarchy = false;  ///< the surfaces were found by rays through Scene::hierarchy (RayCastStage)
+  bool byHierarchy =
+      false;  ///< the surfaces were found by rays through Scene::hierarchy (RayCastStage)
 };
 
 /// The method actually drawn: auto becomes cull or zbuffer for the scene.
@@ -96,7 +97,7 @@ class Renderer {
   bool drewByHierarchy_ = false;  ///< the last DrawClusters cast rays through the hierarchy
   SurfacePassChoice passChoice_;  ///< rays or clusters, by their times (HierarchyUse::kWhenFaster)
   std::weak_ptr<const RayBvh> choiceHierarchy_;  ///< the hierarchy passChoice_ timed
-  uint64_t choiceHierarchySerial_ = 0;                ///< bumped when it changes
+  uint64_t choiceHierarchySerial_ = 0;           ///< bumped when it changes
   SampleGrid lastGrid_;
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
