@@ -169,24 +169,40 @@ class Builder {
   };
 
   // The subtree over sorted triangles [begin, end): a leaf when few, else a
-  // node of up to four children (two Morton splits).
+  // node of up to four children (Morton splits of its largest part).
   Built Build(size_t begin, size_t end) {
     if (end - begin <= RayBvh::kLeafTriangles) return Leaf(begin, end);
     if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed))
       return {RayBvh::kEmpty, {}, {}};
     const auto node = static_cast<uint32_t>(bvh_.nodes.size());
     bvh_.nodes.emplace_back();
-    std::pair<size_t, size_t> parts[4];
-    int partCount = 0;
-    const size_t middle = Split(begin, end);
-    for (const auto& [b, e] : {std::pair{begin, middle}, std::pair{middle, end}}) {
-      if (e - b <= RayBvh::kLeafTriangles) {
-        parts[partCount++] = {b, e};
-      } else {
-        const size_t m = Split(b, e);
-        parts[partCount++] = {b, m};
-        parts[partCount++] = {m, e};
+    // Up to four children: the largest part split again while any part
+    // is more than a leaf (fuller nodes make a shallower tree).
+    std::pair<size_t, size_t> parts[4] = {{begin, end}};
+    int partCount = 1;
+    if (end - begin <= 4 * RayBvh::kLeafTriangles) {
+      // Few enough for full leaves: runs of the Morton order, which lie together.
+      partCount = 0;
+      for (size_t b = begin; b < end; b += RayBvh::kLeafTriangles) {
+        parts[partCount++] = {b, std::min(end, b + RayBvh::kLeafTriangles)};
       }
+    }
+    while (partCount < 4) {
+      int largest = -1;
+      for (int i = 0; i < partCount; ++i) {
+        const size_t size = parts[i].second - parts[i].first;
+        if (size > RayBvh::kLeafTriangles &&
+            (largest < 0 || size > parts[largest].second - parts[largest].first)) {
+          largest = i;
+        }
+      }
+      if (largest < 0) break;
+      const auto [b, e] = parts[largest];
+      const size_t middle = Split(b, e);
+      for (int i = partCount; i > largest + 1; --i) parts[i] = parts[i - 1];
+      parts[largest] = {b, middle};
+      parts[largest + 1] = {middle, e};
+      ++partCount;
     }
     bvh_.cones.emplace_back();
     Box box;
