@@ -180,7 +180,7 @@ class Builder {
     // is more than a leaf (fuller nodes make a shallower tree).
     std::pair<size_t, size_t> parts[4] = {{begin, end}};
     int partCount = 1;
-    if (end - begin <= 4 * RayBvh::kLeafTriangles) {
+    if (end - begin <= size_t{4} * RayBvh::kLeafTriangles) {
       // Few enough for full leaves: runs of the Morton order, which lie together.
       partCount = 0;
       for (size_t b = begin; b < end; b += RayBvh::kLeafTriangles) {
@@ -305,7 +305,7 @@ class Builder {
   size_t Split(size_t begin, size_t end) const {
     const uint64_t first = keys_[begin].code, last = keys_[end - 1].code;
     if (first == last) return begin + (end - begin) / 2;
-    const uint64_t bit = uint64_t{1} << (63 - std::countl_zero(first ^ last));
+    const uint64_t bit = std::bit_floor(first ^ last);
     const auto at = std::partition_point(keys_.begin() + static_cast<std::ptrdiff_t>(begin),
                                          keys_.begin() + static_cast<std::ptrdiff_t>(end),
                                          [bit](const Keyed& k) { return (k.code & bit) == 0; });

@@ -59,8 +59,8 @@ struct CastFrame {
   CastFrame(const Scene& s, const RayBvh& b, const ClusterFrame& f, int w, int h)
       : scene(s), bvh(b), frame(f), width(w), height(h) {
     const auto& m = frame.eyeFromWorld.m;
-    for (int r = 0; r < 3; ++r) {
-      for (int k = 0; k < 3; ++k) rows[r][k] = m[static_cast<size_t>(r * 4 + k)];
+    for (size_t r = 0; r < 3; ++r) {
+      for (size_t k = 0; k < 3; ++k) rows[r][k] = m[r * 4 + k];
     }
     const double eyeWorld[3] = {frame.eyeWorld.x, frame.eyeWorld.y, frame.eyeWorld.z};
     eyeLength = Length(frame.eyeWorld);
@@ -249,7 +249,7 @@ class SampleCaster {
     const float* const low = &node.low[0][0];
     const float* const high = &node.high[0][0];
     Floats4 entry = Splat(0.0F), exit = Splat(INFINITY), depth = Splat(-cast_.depthMargin);
-    for (int k = 0; k < 3; ++k) {
+    for (size_t k = 0; k < 3; ++k) {
       const bool nearLow = (ray.nearIsLow >> k & 1U) != 0;
       const Floats4 nearPlane = Load4((nearLow ? low : high) + 4 * k);
       const Floats4 farPlane = Load4((nearLow ? high : low) + 4 * k);
