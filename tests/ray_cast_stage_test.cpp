@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <random>
 #include <string>
@@ -16,6 +17,7 @@
 
 #include "geometry/FitCamera.h"
 #include "geometry/RayBvh.h"
+#include "io/ModelLoader.h"
 #include "io/SceneGenerators.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
@@ -339,6 +341,49 @@ TEST(RayCastStage, Sphere200kMatchesTheFaceLoopAndIsCast) {
   const int cast = ExpectRayFramesMatch("sphere 200k", PrepareScene(GenerateTriangleSphere(200000)),
                                         {160, 48, 61, 7});
   EXPECT_GT(cast, 0);  // not only the views where the rays do not apply
+}
+
+// Real models: every model of tests/models and Assimp's test models that
+// loads, drawn by rays and by clusters from views near and far, zbuffer and
+// cull, depth kept: the same faces and depth in every cell.
+TEST(RayCastStage, ModelFilesMatchTheClusterPass) {
+  int scenes = 0, cast = 0;
+  for (const std::string& root :
+       {test::SourcePath("tests/models"), std::string("/usr/share/assimp/models")}) {
+    std::error_code error;
+    for (std::filesystem::recursive_directory_iterator it(root, error), end; !error && it != end;
+         it.increment(error)) {
+      if (!it->is_regular_file(error)) continue;
+      Loaded<Mesh> mesh = LoadModelFile(it->path().string());
+      if (!mesh.Ok()) continue;
+      const Scene scene = PrepareScene(std::move(mesh.Value()));
+      if (scene.triangles.empty()) continue;
+      ++scenes;
+      scene.hierarchy.Attach(Hierarchy(scene));
+      for (const Method method : {Method::kZBuffer, Method::kCull}) {
+        for (const test::OrbitView& view : {test::OrbitView{0.3, 1.1, 1.0}, {4.4, 2.0, 0.3}}) {
+          RenderOptions clusters;
+          clusters.method = method;
+          clusters.keepDepth = true;
+          clusters.threads = 2;
+          clusters.threadsFromTriangles = 0;
+          clusters.variant.hierarchy = HierarchyUse::kNever;
+          RenderOptions rays = clusters;
+          rays.variant.hierarchy = HierarchyUse::kAlways;
+          Renderer byClusters, byRays;
+          const test::DrawnFrame expected =
+              test::DrawOrbit(byClusters, scene, view, 97, 31, clusters);
+          const test::DrawnFrame actual = test::DrawOrbit(byRays, scene, view, 97, 31, rays);
+          test::ExpectSameFrame(expected, actual,
+                                it->path().string() + " " + std::string(MethodName(method)) +
+                                    " theta " + std::to_string(view.theta));
+          cast += actual.stats.byHierarchy ? 1 : 0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(scenes, 0);
+  EXPECT_GT(cast, 0);
 }
 
 }  // namespace
