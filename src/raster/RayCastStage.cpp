@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "geometry/FixedRange.h"
+#include "raster/EdgeFunction.h"
 #include "raster/FixedPoint.h"
 #include "raster/VertexStage.h"
 
@@ -322,25 +323,13 @@ class SampleCaster {
     SampleResult& result = lane.result;
     // The rasterizer's steps: oriented clockwise on screen, edge functions
     // with the top-left bias, 1/z from the edge weights (TriangleRasterizer.cpp).
-    const RasterVertex* v0 = &a;
-    const RasterVertex* v1 = &b;
-    const RasterVertex* v2 = &c;
-    int64_t area = (int64_t{v1->x} - v0->x) * (int64_t{v2->y} - v0->y) -
-                   (int64_t{v1->y} - v0->y) * (int64_t{v2->x} - v0->x);
+    const auto [v0, v1, v2, area] = OrientClockwise(a, b, c);
     if (area == 0) return;
-    if (area < 0) {
-      std::swap(v1, v2);
-      area = -area;
-    }
     const int64_t sampleX = int64_t{col} * kFixedOne + kFixedHalf;
     const int64_t sampleY = int64_t{row} * kFixedOne + kFixedHalf;
-    auto edge = [&](const RasterVertex& p, const RasterVertex& q) {
-      const int64_t dx = int64_t{q.x} - p.x;
-      const int64_t dy = int64_t{q.y} - p.y;
-      const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
-      return dx * (sampleY - p.y) - dy * (sampleX - p.x) - (topLeft ? 0 : 1);
-    };
-    const int64_t e12 = edge(*v1, *v2), e20 = edge(*v2, *v0), e01 = edge(*v0, *v1);
+    const int64_t e12 = MakeEdgeFunction(*v1, *v2, sampleX, sampleY).atOrigin;
+    const int64_t e20 = MakeEdgeFunction(*v2, *v0, sampleX, sampleY).atOrigin;
+    const int64_t e01 = MakeEdgeFunction(*v0, *v1, sampleX, sampleY).atOrigin;
     if ((e12 | e20 | e01) < 0) return;
     const uint32_t face = scene.TriangleFace(t);
     if (lane.leafAllFront == 0 && !scene.facePlanesWorld[face].FacesPoint(frame.eyeWorld)) return;

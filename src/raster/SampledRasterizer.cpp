@@ -6,27 +6,13 @@
 #include <emmintrin.h>
 #endif
 
+#include "raster/EdgeFunction.h"
 #include "raster/FixedPoint.h"
 
 namespace termshade {
 namespace {
 
-// Edge function of a -> b at the origin sample and its steps per sample, as
-// TriangleRasterizer.cpp's MakeEdge (positive inside a clockwise triangle,
-// biased by 1 on edges that are neither top nor left).
-struct Edge {
-  int64_t stepX = 0;
-  int64_t stepY = 0;
-  int64_t atOrigin = 0;
-};
-
-Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int64_t originY) {
-  const int64_t dx = int64_t{b.x} - a.x;
-  const int64_t dy = int64_t{b.y} - a.y;
-  const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
-  return {-dy * kFixedOne, dx * kFixedOne,
-          dx * (originY - a.y) - dy * (originX - a.x) - (topLeft ? 0 : 1)};
-}
+using Edge = EdgeFunction;
 
 // Samples s (centers s * 256 + 128) in [low, high], clipped to [0, limit).
 void SampleRange(int32_t low, int32_t high, int limit, int& first, int& last) {
@@ -46,9 +32,9 @@ inline __attribute__((always_inline)) Setup MakeSetup(const RasterVertex& v0,
                                                       const RasterVertex& v2, int64_t area,
                                                       int64_t originX, int64_t originY) {
   const float invArea = 1.0F / static_cast<float>(area);
-  return {MakeEdge(v1, v2, originX, originY),
-          MakeEdge(v2, v0, originX, originY),
-          MakeEdge(v0, v1, originX, originY),
+  return {MakeEdgeFunction(v1, v2, originX, originY),
+          MakeEdgeFunction(v2, v0, originX, originY),
+          MakeEdgeFunction(v0, v1, originX, originY),
           v0.w * invArea,
           v1.w * invArea,
           v2.w * invArea};
@@ -208,7 +194,7 @@ typedef long long Long4
 
 // Edge e's values at eight samples (columns i, rows j from the origin sample).
 __attribute__((target("avx2"), always_inline)) inline Int8 LaneValues(const Edge& e, UInt8 i,
-                                                                       UInt8 j) {
+                                                                      UInt8 j) {
   return reinterpret_cast<Int8>(i * static_cast<uint32_t>(e.stepX) +
                                 j * static_cast<uint32_t>(e.stepY) +
                                 static_cast<uint32_t>(e.atOrigin));
@@ -348,16 +334,8 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
   SampleRange(minY, maxY, frame.HeightCells() * M, row0, row1);
   if (row0 > row1) return;
   // Step 2: orient clockwise on screen; drop empty triangles.
-  const RasterVertex* v0 = &a;
-  const RasterVertex* v1 = &b;
-  const RasterVertex* v2 = &c;
-  int64_t area = (int64_t{v1->x} - v0->x) * (int64_t{v2->y} - v0->y) -
-                 (int64_t{v1->y} - v0->y) * (int64_t{v2->x} - v0->x);
+  const auto [v0, v1, v2, area] = OrientClockwise(a, b, c);
   if (area == 0) return;
-  if (area < 0) {
-    std::swap(v1, v2);
-    area = -area;
-  }
   // Step 3: 32-bit lanes when |edge| <= 2 extent (extent + a cell) + 1 < 2^31
   // for every sample of the cells the box touches.
   const int64_t extent = std::max(int64_t{maxX} - minX, int64_t{maxY} - minY);

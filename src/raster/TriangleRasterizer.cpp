@@ -4,30 +4,11 @@
 #include <cmath>
 #include <iterator>
 
+#include "raster/EdgeFunction.h"
 #include "raster/FixedPoint.h"
 
 namespace termshade {
 namespace {
-
-struct Edge {
-  int64_t stepX = 0;  // change of the edge function per cell to the right
-  int64_t stepY = 0;  // change per cell down
-  int64_t atOrigin = 0;
-};
-
-// Edge function of a -> b at p, positive on the inside of a clockwise-on-screen
-// (v down) triangle; the bias drops samples exactly on edges that are not top
-// or left, so a shared edge belongs to one side only.
-Edge MakeEdge(const RasterVertex& a, const RasterVertex& b, int64_t originX, int64_t originY) {
-  const int64_t dx = int64_t{b.x} - a.x;
-  const int64_t dy = int64_t{b.y} - a.y;
-  const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
-  Edge e;
-  e.stepX = -dy * kFixedOne;
-  e.stepY = dx * kFixedOne;
-  e.atOrigin = dx * (originY - a.y) - dy * (originX - a.x) - (topLeft ? 0 : 1);
-  return e;
-}
 
 // Range of cells whose sample (c * 256 + 128) lies in [low, high]; >> is a
 // floor division by 256 (arithmetic shift, C++20).
@@ -126,23 +107,15 @@ int RasterizeWith(const RasterVertex& a, const RasterVertex& b, const RasterVert
   if (row0 > row1) return 0;
 
   // Step 2: orient clockwise on screen (positive area); drop empty triangles.
-  const RasterVertex* v0 = &a;
-  const RasterVertex* v1 = &b;
-  const RasterVertex* v2 = &c;
-  int64_t area = (int64_t{v1->x} - v0->x) * (int64_t{v2->y} - v0->y) -
-                 (int64_t{v1->y} - v0->y) * (int64_t{v2->x} - v0->x);
+  const auto [v0, v1, v2, area] = OrientClockwise(a, b, c);
   if (area == 0) return 0;
-  if (area < 0) {
-    std::swap(v1, v2);
-    area = -area;
-  }
 
   // Step 3: edge functions at the first sample, stepped per cell.
   const int64_t originX = int64_t{col0} * kFixedOne + kFixedHalf;
   const int64_t originY = int64_t{row0} * kFixedOne + kFixedHalf;
-  const Edge e12 = MakeEdge(*v1, *v2, originX, originY);  // weight of v0
-  const Edge e20 = MakeEdge(*v2, *v0, originX, originY);  // weight of v1
-  const Edge e01 = MakeEdge(*v0, *v1, originX, originY);  // weight of v2
+  const EdgeFunction e12 = MakeEdgeFunction(*v1, *v2, originX, originY);  // weight of v0
+  const EdgeFunction e20 = MakeEdgeFunction(*v2, *v0, originX, originY);  // weight of v1
+  const EdgeFunction e01 = MakeEdgeFunction(*v0, *v1, originX, originY);  // weight of v2
   // 1/z is linear in screen space: w = sum of edge weights times vertex w / area.
   const DepthInterpolator<kFormat> interpolate(*v0, *v1, *v2, area, encoding);
 
