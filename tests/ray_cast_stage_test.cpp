@@ -1,5 +1,5 @@
 // Issue 9: the ray hierarchy's bounds hold (every corner in its leaf's and
-// every ancestor's box, every triangle in one leaf, every normal in its
+// every ancestor's box and slab, every triangle in one leaf, every normal in its
 // ancestors' cones, the facing verdicts true for every face), and a frame
 // drawn by casting a ray a sample through it is bit for bit the frame of the
 // plain face-by-face loop (faces, glyphs, depth, faces seen) on the shipped
@@ -60,12 +60,14 @@ void ForEachLeaf(const RayBvh& bvh, Leaf&& leaf) {
   }
 }
 
+// Inside the child's box and its slab along the node's axis.
 bool InSlot(const RayBvhNode& node, int child, Vec3 p) {
   const double c[3] = {p.x, p.y, p.z};
   for (int k = 0; k < 3; ++k) {
     if (!(c[k] >= node.low[k][child] && c[k] <= node.high[k][child])) return false;
   }
-  return true;
+  const double along = Dot(Vec3{node.slabAxis[0], node.slabAxis[1], node.slabAxis[2]}, p);
+  return along >= node.slabLow[child] && along <= node.slabHigh[child];
 }
 
 void ExpectBoundsHold(const Scene& scene, const std::string& what) {

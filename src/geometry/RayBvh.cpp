@@ -224,8 +224,10 @@ class Builder {
         filled.high[k][i] = i < partCount ? Up(childBox.high[k]) : -INFINITY;
       }
     }
+    Cone cone = MergeCones(cones, partCount, box, bvh_.cones[node]);
+    SetSlabs(cone, parts, partCount, filled);
     bvh_.nodes[node] = filled;
-    return {node, box, MergeCones(cones, partCount, box, bvh_.cones[node])};
+    return {node, box, cone};
   }
 
  private:
@@ -298,6 +300,32 @@ class Builder {
     }
     FinishCone(cone, widest, anyDegenerate ? -INFINITY : heightMin, heightMax, box, stored);
     return cone;
+  }
+
+  // Each child's slab along the node's cone axis (x without one: no tighter
+  // than the box, but a test like the others): its corners' extent along it.
+  void SetSlabs(const Cone& cone, const std::pair<size_t, size_t>* parts, int partCount,
+                RayBvhNode& node) const {
+    const Vec3 axis = cone.usable ? cone.axis : Vec3{1, 0, 0};
+    const float axisF[3] = {static_cast<float>(axis.x), static_cast<float>(axis.y),
+                            static_cast<float>(axis.z)};
+    std::copy(std::begin(axisF), std::end(axisF), node.slabAxis);
+    const Vec3 stored = StoredVector(axisF);
+    for (int i = 0; i < 4; ++i) {
+      double low = INFINITY, high = -INFINITY;
+      for (size_t k = i < partCount ? parts[i].first : 0; i < partCount && k < parts[i].second;
+           ++k) {
+        for (const uint32_t v : scene_.triangles[keys_[k].triangle].vertices) {
+          const double along = Dot(stored, scene_.verticesWorld[v]);
+          low = std::min(low, along);
+          high = std::max(high, along);
+        }
+      }
+      // The products' rounding, about the coordinates' size.
+      const double slack = 1e-12 * (std::fabs(low) + std::fabs(high));
+      node.slabLow[i] = i < partCount ? Down(low - slack) : INFINITY;
+      node.slabHigh[i] = i < partCount ? Up(high + slack) : -INFINITY;
+    }
   }
 
   // Where [begin, end) splits: at the highest bit in which its codes differ

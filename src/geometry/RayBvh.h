@@ -13,11 +13,16 @@ namespace termshade {
 struct Scene;
 
 /// One node of a RayBvh: the world-space boxes of up to four children, as
-/// structure of arrays (four children a SIMD register). Boxes are floats
-/// rounded outward, so every corner of a child's triangles lies inside.
+/// structure of arrays (four children a SIMD register), and each child's
+/// slab along one direction of the node (its faces' mean normal, where they
+/// have one): a . p lies in [slabLow, slabHigh] for every corner p of the
+/// child's triangles. Floats rounded outward, so every corner lies inside.
 struct alignas(16) RayBvhNode {
   float low[3][4];   ///< [axis][child]
   float high[3][4];  ///< [axis][child]
+  float slabLow[4];
+  float slabHigh[4];
+  float slabAxis[3];  ///< unit within float rounding (x where the faces have no mean normal)
   /// Per child: an inner node's index; a leaf as RayBvh::LeafRef; or
   /// RayBvh::kEmpty (its box is empty: low > high).
   uint32_t child[4];

@@ -97,6 +97,7 @@ struct CastFrame {
 
 // One sample's ray: its direction's reciprocals and the widened planes' offsets.
 struct Ray {
+  float direction[3];
   Floats4 inverse[3];   ///< 1 / direction, per axis, splat
   Floats4 nearFrom[3];  ///< eye -+ margin: where the near planes' distances are taken from
   Floats4 farFrom[3];
@@ -114,6 +115,7 @@ Ray MakeRay(const CastFrame& cast, int col, int row) {
     if (std::fabs(direction) < 1e-20) direction = direction < 0.0 ? -1e-20 : 1e-20;
     const auto inverse = static_cast<float>(1.0 / direction);
     const bool positive = direction >= 0.0;
+    ray.direction[k] = static_cast<float>(direction);
     ray.inverse[k] = Splat(inverse);
     const float shift = positive ? cast.margin : -cast.margin;
     ray.nearFrom[k] = Splat(cast.eye[k] + shift);
@@ -263,6 +265,17 @@ class SampleCaster {
       depth +=
           (Load4((depthLow ? low : high) + 4 * k) - Splat(cast_.eye[k])) * Splat(cast_.forward[k]);
     }
+    // The slabs along the node's axis: a . (eye + t d) within each child's, widened.
+    const float along = node.slabAxis[0] * ray.direction[0] + node.slabAxis[1] * ray.direction[1] +
+                        node.slabAxis[2] * ray.direction[2];
+    const float from = node.slabAxis[0] * cast_.eye[0] + node.slabAxis[1] * cast_.eye[1] +
+                       node.slabAxis[2] * cast_.eye[2];
+    const float inverseAlong = 1.0F / (std::fabs(along) < 1e-30F ? 1e-30F : along);
+    const Floats4 toLow = (Load4(node.slabLow) - Splat(cast_.margin + from)) * Splat(inverseAlong);
+    const Floats4 toHigh =
+        (Load4(node.slabHigh) + Splat(cast_.margin - from)) * Splat(inverseAlong);
+    entry = Max4(entry, Min4(toLow, toHigh));
+    exit = Min4(exit, Max4(toLow, toHigh));
     Ints4 keep = entry <= exit;
     if (bestW > 0.0F) keep &= depth * Splat(bestW) <= Splat(1.0F + kDepthSlack);
     const Ints4 bits = keep & Ints4{1, 2, 4, 8};
