@@ -22,6 +22,14 @@ Floats4 Load4(const float* p) {
   return v;
 }
 
+// Both ends of a small object: it may straddle two cache lines.
+template <typename T>
+void PrefetchWhole(const T* p) {
+  static_assert(sizeof(T) <= 64);
+  __builtin_prefetch(p);
+  __builtin_prefetch(reinterpret_cast<const char*>(p) + sizeof(T) - 1);
+}
+
 Floats4 Splat(float x) {
   return Floats4{x, x, x, x};
 }
@@ -183,7 +191,7 @@ class SampleCaster {
         const uint32_t* const ids = cast_.bvh.triangles.data() + RayBvh::LeafFirst(lane.leaf);
         for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
           lane.triangles[i] = ids[i];
-          __builtin_prefetch(&cast_.scene.triangles[ids[i]]);
+          PrefetchWhole(&cast_.scene.triangles[ids[i]]);
           if (lane.leafAllFront == 0 && !cast_.scene.triangleFaces.empty()) {
             __builtin_prefetch(&cast_.scene.triangleFaces[ids[i]]);
           }
@@ -195,7 +203,7 @@ class SampleCaster {
         for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
           const uint32_t t = lane.triangles[i];
           for (const uint32_t v : cast_.scene.triangles[t].vertices) {
-            __builtin_prefetch(&cast_.scene.verticesWorld[v]);
+            PrefetchWhole(&cast_.scene.verticesWorld[v]);
           }
           if (lane.leafAllFront == 0) {
             __builtin_prefetch(&cast_.scene.facePlanesWorld[cast_.scene.TriangleFace(t)]);
@@ -227,7 +235,9 @@ class SampleCaster {
       if (RayBvh::IsLeaf(entry.ref)) {
         lane.leaf = entry.ref;
         lane.leafAllFront = entry.allFront;
-        __builtin_prefetch(cast_.bvh.triangles.data() + RayBvh::LeafFirst(entry.ref));
+        const uint32_t* const ids = cast_.bvh.triangles.data() + RayBvh::LeafFirst(entry.ref);
+        __builtin_prefetch(ids);
+        __builtin_prefetch(ids + RayBvh::LeafCount(entry.ref) - 1);
         lane.phase = Lane::Phase::kLeafTriangles;
         return true;
       }
@@ -293,9 +303,11 @@ class SampleCaster {
       found[at] = {node.child[i], depth[i], allFront};
       if (!RayBvh::IsLeaf(node.child[i])) {
         const auto* const line = reinterpret_cast<const char*>(&cast_.bvh.nodes[node.child[i]]);
+        static_assert(sizeof(RayBvhNode) <= 192);  // three lines at most (16-byte aligned)
         __builtin_prefetch(line);
         __builtin_prefetch(line + 64);
-        if (allFront == 0) __builtin_prefetch(&cast_.bvh.cones[node.child[i]]);
+        __builtin_prefetch(line + sizeof(RayBvhNode) - 1);
+        if (allFront == 0) PrefetchWhole(&cast_.bvh.cones[node.child[i]]);
       }
     }
     std::memcpy(stack + top, found, sizeof found);  // the stack keeps room for four more
