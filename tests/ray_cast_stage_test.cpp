@@ -299,6 +299,17 @@ TEST(RayCastStage, SmallScenesMatchTheFaceLoop) {
   ExpectRayFramesMatch("nan and collinear", PrepareScene(nan), {80, 24});
 }
 
+// Two threads, whatever the triangle count, drawn by clusters only.
+RenderOptions ClusterOptions(Method method, bool keepDepth) {
+  RenderOptions options;
+  options.method = method;
+  options.keepDepth = keepDepth;
+  options.threads = 2;
+  options.threadsFromTriangles = 0;
+  options.variant.hierarchy = HierarchyUse::kNever;
+  return options;
+}
+
 // Where both passes may draw (kWhenFaster, enough triangles a sample) the
 // renderer times them against each other: after a key's first frame (the
 // prior's, uncounted) each pass draws two frames in turn, and every frame,
@@ -306,11 +317,7 @@ TEST(RayCastStage, SmallScenesMatchTheFaceLoop) {
 // another hierarchy (a new scene) starts the timing over.
 TEST(RayCastStage, MeasuredChoiceDrawsBothPassesWithTheSameFrames) {
   const Scene sphere = PrepareScene(GenerateTriangleSphere(12000));  // 94 a sample at 16x8
-  RenderOptions clusters;
-  clusters.method = Method::kAuto;
-  clusters.threads = 2;
-  clusters.threadsFromTriangles = 0;
-  clusters.variant.hierarchy = HierarchyUse::kNever;
+  const RenderOptions clusters = ClusterOptions(Method::kAuto, false);
   RenderOptions measured = clusters;
   measured.variant.hierarchy = HierarchyUse::kWhenFaster;
   Renderer reference, chooser;
@@ -364,12 +371,7 @@ TEST(RayCastStage, ModelFilesMatchTheClusterPass) {
       scene.hierarchy.Attach(Hierarchy(scene));
       for (const Method method : {Method::kZBuffer, Method::kCull}) {
         for (const test::OrbitView& view : {test::OrbitView{0.3, 1.1, 1.0}, {4.4, 2.0, 0.3}}) {
-          RenderOptions clusters;
-          clusters.method = method;
-          clusters.keepDepth = true;
-          clusters.threads = 2;
-          clusters.threadsFromTriangles = 0;
-          clusters.variant.hierarchy = HierarchyUse::kNever;
+          const RenderOptions clusters = ClusterOptions(method, true);
           RenderOptions rays = clusters;
           rays.variant.hierarchy = HierarchyUse::kAlways;
           Renderer byClusters, byRays;
