@@ -317,7 +317,7 @@ RenderOptions ClusterOptions(Method method, bool keepDepth) {
 // another hierarchy (a new scene) starts the timing over.
 TEST(RayCastStage, MeasuredChoiceDrawsBothPassesWithTheSameFrames) {
   const Scene sphere = PrepareScene(GenerateTriangleSphere(12000));  // 94 a sample at 16x8
-  const RenderOptions clusters = ClusterOptions(Method::kAuto, false);
+  const RenderOptions clusters = ClusterOptions(Method::kAuto, true);
   RenderOptions measured = clusters;
   measured.variant.hierarchy = HierarchyUse::kWhenFaster;
   Renderer reference, chooser;
