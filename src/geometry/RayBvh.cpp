@@ -204,7 +204,6 @@ class Builder {
       parts[largest + 1] = {middle, e};
       ++partCount;
     }
-    bvh_.cones.emplace_back();
     Box box;
     RayBvhNode filled{};
     Cone cones[4];
@@ -224,8 +223,8 @@ class Builder {
         filled.high[k][i] = i < partCount ? Up(childBox.high[k]) : -INFINITY;
       }
     }
-    Cone cone = MergeCones(cones, partCount, box, bvh_.cones[node]);
-    SetSlabs(cone, parts, partCount, filled);
+    Cone cone = MergeCones(cones, partCount, box, filled.cone);
+    SetSlabs(parts, partCount, filled);
     bvh_.nodes[node] = filled;
     return {node, box, cone};
   }
@@ -302,15 +301,16 @@ class Builder {
     return cone;
   }
 
-  // Each child's slab along the node's cone axis (x without one: no tighter
-  // than the box, but a test like the others): its corners' extent along it.
-  void SetSlabs(const Cone& cone, const std::pair<size_t, size_t>* parts, int partCount,
-                RayBvhNode& node) const {
-    const Vec3 axis = cone.usable ? cone.axis : Vec3{1, 0, 0};
-    const float axisF[3] = {static_cast<float>(axis.x), static_cast<float>(axis.y),
-                            static_cast<float>(axis.z)};
-    std::copy(std::begin(axisF), std::end(axisF), node.slabAxis);
-    const Vec3 stored = StoredVector(axisF);
+  // Each child's slab along the node's stored cone axis (x without a usable
+  // cone: no tighter than the box, but a test like the others): its
+  // corners' extent along it.
+  void SetSlabs(const std::pair<size_t, size_t>* parts, int partCount, RayBvhNode& node) const {
+    RayBvhCone& cone = node.cone;
+    if (!(cone.coneCos > 0.0F) || cone.coneCos == RayBvhCone::kAllAway) {
+      cone.axis[0] = 1.0F;
+      cone.axis[1] = cone.axis[2] = 0.0F;
+    }
+    const Vec3 stored = StoredVector(cone.axis);
     for (int i = 0; i < 4; ++i) {
       double low = INFINITY, high = -INFINITY;
       for (size_t k = i < partCount ? parts[i].first : 0; i < partCount && k < parts[i].second;
@@ -401,16 +401,16 @@ RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel) {
   bvh.triangles.resize(count);
   bvh.nodes.reserve(count / 2 + 1);
   AdviseHugePages(bvh.nodes);
-  bvh.cones.reserve(count / 2 + 1);
-  AdviseHugePages(bvh.cones);
   Builder builder(scene, bvh, std::move(keys), cancel);
   if (count <= RayBvh::kLeafTriangles) {
     bvh.nodes.emplace_back();
-    bvh.cones.push_back({{0, 0, 0}, {0, 0, 0}, RayBvhCone::kNoCone, 0.0F, 0.0F});
     const Builder::Built leaf = builder.Build(0, count);
     RayBvhNode& root = bvh.nodes[0];
+    root.cone = {{0, 0, 0}, {1, 0, 0}, RayBvhCone::kNoCone, 0.0F, 0.0F};
     for (int i = 0; i < 4; ++i) {
       root.child[i] = i == 0 ? leaf.ref : RayBvh::kEmpty;
+      root.slabLow[i] = i == 0 ? -INFINITY : INFINITY;
+      root.slabHigh[i] = i == 0 ? INFINITY : -INFINITY;
       for (int k = 0; k < 3; ++k) {
         root.low[k][i] = i == 0 ? Down(leaf.box.low[k]) : INFINITY;
         root.high[k][i] = i == 0 ? Up(leaf.box.high[k]) : -INFINITY;

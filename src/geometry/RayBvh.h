@@ -12,34 +12,35 @@ namespace termshade {
 
 struct Scene;
 
-/// One node of a RayBvh: the world-space boxes of up to four children, as
-/// structure of arrays (four children a SIMD register), and each child's
-/// slab along one direction of the node (its faces' mean normal, where they
-/// have one): a . p lies in [slabLow, slabHigh] for every corner p of the
-/// child's triangles. Floats rounded outward, so every corner lies inside.
-struct alignas(16) RayBvhNode {
-  float low[3][4];   ///< [axis][child]
-  float high[3][4];  ///< [axis][child]
-  float slabLow[4];
-  float slabHigh[4];
-  float slabAxis[3];  ///< unit within float rounding (x where the faces have no mean normal)
-  /// Per child: an inner node's index; a leaf as RayBvh::LeafRef; or
-  /// RayBvh::kEmpty (its box is empty: low > high).
-  uint32_t child[4];
-};
-
 /// The normal cone of a node's faces: every face's unit normal n has
 /// n . axis / |axis| >= coneCos, and n . center - offset lies in [heightMin,
 /// heightMax] (its plane n . p = offset). Floats; the bounds hold for them
 /// as stored.
 struct RayBvhCone {
   float center[3];
-  float axis[3];    ///< unit within float rounding
+  float axis[3];    ///< unit within float rounding; x when coneCos is kNoCone or kAllAway
   float coneCos;    ///< kNoCone: none usable; kAllAway: no face can face any point
   float heightMin;  ///< -inf when a face is degenerate (such a face never faces a point)
   float heightMax;  ///< both widened past the rounding of the stored center and axis
   static constexpr float kNoCone = -2.0F;
   static constexpr float kAllAway = 2.0F;
+};
+
+/// One node of a RayBvh, three cache lines: the world-space boxes of up to
+/// four children, as structure of arrays (four children a SIMD register);
+/// each child's slab along the node's cone axis (x where the faces have no
+/// usable cone): a . p lies in [slabLow, slabHigh] for every corner p of the
+/// child's triangles; and the node's own normal cone. Floats rounded
+/// outward, so every corner lies inside.
+struct alignas(64) RayBvhNode {
+  float low[3][4];   ///< [axis][child]
+  float high[3][4];  ///< [axis][child]
+  float slabLow[4];
+  float slabHigh[4];
+  /// Per child: an inner node's index; a leaf as RayBvh::LeafRef; or
+  /// RayBvh::kEmpty (its box is empty: low > high).
+  uint32_t child[4];
+  RayBvhCone cone;  ///< its axis is the slabs' axis
 };
 
 /// Which way the faces of the cone's node turn as seen from pWorld:
@@ -61,7 +62,6 @@ struct RayBvh {
   static constexpr size_t kMaxTriangles = size_t{1} << 28;
 
   std::vector<RayBvhNode> nodes;    ///< nodes[0] is the root (when not empty)
-  std::vector<RayBvhCone> cones;    ///< per node: its faces' normal cone
   std::vector<uint32_t> triangles;  ///< scene triangle indices; each leaf a run of them
   float low[3] = {0, 0, 0};         ///< the root's box, world space
   float high[3] = {0, 0, 0};
@@ -80,8 +80,7 @@ struct RayBvh {
 
   bool Empty() const { return nodes.empty(); }
   size_t Bytes() const {
-    return nodes.size() * (sizeof(RayBvhNode) + sizeof(RayBvhCone)) +
-           triangles.size() * sizeof(uint32_t);
+    return nodes.size() * sizeof(RayBvhNode) + triangles.size() * sizeof(uint32_t);
   }
   bool BuiltFor(const Scene& scene) const;
 };

@@ -246,7 +246,7 @@ class SampleCaster {
       uint32_t allFront = entry.allFront;
       if (allFront == 0) {
         const ClusterFacing facing =
-            ConeFacing(cast_.bvh.cones[entry.ref], cast_.frame.eyeWorld, cast_.eyeLength);
+            ConeFacing(cast_.bvh.nodes[entry.ref].cone, cast_.frame.eyeWorld, cast_.eyeLength);
         if (facing == ClusterFacing::kAway) continue;
         allFront = facing == ClusterFacing::kToward ? 1 : 0;
       }
@@ -276,10 +276,10 @@ class SampleCaster {
           (Load4((depthLow ? low : high) + 4 * k) - Splat(cast_.eye[k])) * Splat(cast_.forward[k]);
     }
     // The slabs along the node's axis: a . (eye + t d) within each child's, widened.
-    const float along = node.slabAxis[0] * ray.direction[0] + node.slabAxis[1] * ray.direction[1] +
-                        node.slabAxis[2] * ray.direction[2];
-    const float from = node.slabAxis[0] * cast_.eye[0] + node.slabAxis[1] * cast_.eye[1] +
-                       node.slabAxis[2] * cast_.eye[2];
+    const float* const axis = node.cone.axis;
+    const float along =
+        axis[0] * ray.direction[0] + axis[1] * ray.direction[1] + axis[2] * ray.direction[2];
+    const float from = axis[0] * cast_.eye[0] + axis[1] * cast_.eye[1] + axis[2] * cast_.eye[2];
     const float inverseAlong = 1.0F / (std::fabs(along) < 1e-30F ? 1e-30F : along);
     const Floats4 toLow = (Load4(node.slabLow) - Splat(cast_.margin + from)) * Splat(inverseAlong);
     const Floats4 toHigh =
@@ -303,11 +303,10 @@ class SampleCaster {
       found[at] = {node.child[i], depth[i], allFront};
       if (!RayBvh::IsLeaf(node.child[i])) {
         const auto* const line = reinterpret_cast<const char*>(&cast_.bvh.nodes[node.child[i]]);
-        static_assert(sizeof(RayBvhNode) <= 192);  // three lines at most (16-byte aligned)
+        static_assert(sizeof(RayBvhNode) == 192);  // three lines (aligned to one)
         __builtin_prefetch(line);
         __builtin_prefetch(line + 64);
-        __builtin_prefetch(line + sizeof(RayBvhNode) - 1);
-        if (allFront == 0) PrefetchWhole(&cast_.bvh.cones[node.child[i]]);
+        __builtin_prefetch(line + 128);
       }
     }
     std::memcpy(stack + top, found, sizeof found);  // the stack keeps room for four more
