@@ -33,6 +33,12 @@ class RayCastStage {
   struct Lane;
   /// Walks each worker keeps going at once, stepped in turn.
   static constexpr int kLanes = 8;
+  /// Samples are handed out in tiles of this many columns and rows; each
+  /// tile's rays start below the subtrees its pyramid reaches.
+  static constexpr int kTileCols = 8;
+  static constexpr int kTileRows = 4;
+  /// One worker's tile in progress (RayCastStage.cpp).
+  struct WorkerTile;
 
   /// True when the frame is one the stage draws exactly: one sample a cell,
   /// back faces culled, double geometry and float 1/z, and every vertex on
@@ -75,10 +81,12 @@ class RayCastStage {
 
  private:
   std::unique_ptr<WorkerPool> pool_;
-  std::atomic<int> nextRow_{0};
+  std::atomic<int> nextTile_{0};
   std::vector<int> coveredPerWorker_;
   std::unique_ptr<Lane[]> lanes_;  ///< kLanes a worker
   size_t laneCount_ = 0;
+  std::unique_ptr<WorkerTile[]> workerTiles_;  ///< one a worker
+  size_t workerTileCount_ = 0;
 };
 
 }  // namespace termshade
