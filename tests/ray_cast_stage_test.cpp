@@ -11,12 +11,14 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "geometry/FitCamera.h"
 #include "geometry/RayBvh.h"
+#include "geometry/ViewingTransform.h"
 #include "io/ModelLoader.h"
 #include "io/SceneGenerators.h"
 #include "raster/RayCastStage.h"
@@ -297,6 +299,99 @@ TEST(RayCastStage, SmallScenesMatchTheFaceLoop) {
   nan.AddFace(std::array<uint32_t, 3>{0, 1, 4});
   nan.AddFace(std::array<uint32_t, 3>{0, 0, 1});  // collinear
   ExpectRayFramesMatch("nan and collinear", PrepareScene(nan), {80, 24});
+}
+
+// A triangle 0.3 cells across whose edge lies `gap` cells beyond a sample
+// (below it: a top edge; right of it: a left edge), both owned by the top-left
+// rule: snapped to 1/512 cell the edge runs through the sample and covers it.
+// World points from cell coordinates at eye depth 5, facing the eye.
+void AddTriangleBeside(Mesh& mesh, const Camera& camera, int col, int row, bool below, double gap) {
+  const Mat4 eyeFromWorld = EyeFromWorld(camera.view);
+  const Vec3 eyeWorld = EyePositionWorld(camera.view);
+  const Projection& p = camera.projection;
+  auto world = [&](double u, double v) {
+    const double depth = 5.0;
+    const Vec3 eye{(u - p.cx) * depth / p.d, (p.cy - v) * p.cellAspect * depth / p.d, -depth};
+    Vec3 out = eyeWorld;  // p_world = R^T p_eye + eye
+    for (size_t r = 0; r < 3; ++r) {
+      const double e = r == 0 ? eye.x : r == 1 ? eye.y : eye.z;
+      out = out + Vec3{eyeFromWorld.At(r, 0), eyeFromWorld.At(r, 1), eyeFromWorld.At(r, 2)} * e;
+    }
+    return out;
+  };
+  const double u = col + 0.5, v = row + 0.5;
+  std::array<Vec3, 3> corners =
+      below ? std::array<Vec3, 3>{world(u - 0.3, v + gap), world(u + 0.3, v + gap),
+                                  world(u, v + gap + 0.3)}
+            : std::array<Vec3, 3>{world(u + gap, v - 0.3), world(u + gap, v + 0.3),
+                                  world(u + gap + 0.3, v)};
+  // Facing the eye: the normal towards it.
+  if (Dot(Cross(corners[1] - corners[0], corners[2] - corners[0]), eyeWorld - corners[0]) < 0.0) {
+    std::swap(corners[1], corners[2]);
+  }
+  const auto base = static_cast<uint32_t>(mesh.verticesFile.size());
+  for (const Vec3& c : corners) mesh.verticesFile.push_back(c);
+  mesh.AddFace(std::array<uint32_t, 3>{base, base + 1, base + 2});
+}
+
+// Rays start below what their tile's pyramid reaches (through the tile's
+// corner samples). A triangle just outside that pyramid still covers the
+// tile's edge sample once snapped: the pyramid is widened like every box.
+// The view looks along -x, so the boxes of the triangles (in the plane x =
+// 0) lie outside the pyramid where their triangles do.
+TEST(RayCastStage, TrianglesSnappedOntoATilesEdgeSamplesAreFound) {
+  const int width = 80, height = 24;
+  const int tileCols = RayCastStage::kTileCols, tileRows = RayCastStage::kTileRows;
+  const Camera camera{{5.0, 0.0, std::numbers::pi / 2}, {200.0, 40.0, 12.0, 2.0}};
+  for (const bool below : {true, false}) {
+    Mesh mesh;
+    mesh.upAxisFile = UpAxis::kPlusZ;
+    // Below every sample of each tile's bottom row, or right of every sample of its right column.
+    for (int row = 0; row < height; ++row) {
+      for (int col = 0; col < width; ++col) {
+        if (below ? row % tileRows == tileRows - 1 : col % tileCols == tileCols - 1) {
+          AddTriangleBeside(mesh, camera, col, row, below, 0.0008);
+        }
+      }
+    }
+    const int triangles = static_cast<int>(mesh.FaceCount());
+    // Two specks at opposite corners: the box, and so the world, centered on the origin.
+    const auto base = static_cast<uint32_t>(mesh.verticesFile.size());
+    for (const double a : {-1.5, 1.5}) {
+      mesh.verticesFile.push_back({a, a, a});
+      mesh.verticesFile.push_back({a * 0.999, a, a});
+      mesh.verticesFile.push_back({a, a * 0.999, a});
+    }
+    mesh.AddFace(std::array<uint32_t, 3>{base, base + 1, base + 2});
+    mesh.AddFace(std::array<uint32_t, 3>{base + 3, base + 4, base + 5});
+    const Scene scene = PrepareScene(std::move(mesh));
+    scene.hierarchy.Attach(Hierarchy(scene));
+    RenderOptions reference;
+    reference.variant.clusters = false;
+    test::DrawnFrame expected{{}, {}, {}};
+    expected.cells.Resize(width, height);
+    expected.depth.Resize(width, height);
+    Renderer plain;
+    expected.stats = plain.Render(scene, camera, reference, expected.depth, expected.cells);
+    int covered = 0;
+    for (const uint32_t face : expected.cells.FaceNumbers()) covered += face != 0 ? 1 : 0;
+    EXPECT_EQ(covered, triangles) << "each triangle covers its edge sample, and only it";
+    for (const int threads : {1, 2}) {
+      RenderOptions options = reference;
+      options.variant.clusters = true;
+      options.variant.hierarchy = HierarchyUse::kAlways;
+      options.threads = threads;
+      options.threadsFromTriangles = 0;
+      test::DrawnFrame actual{{}, {}, {}};
+      actual.cells.Resize(width, height);
+      actual.depth.Resize(width, height);
+      Renderer renderer;
+      actual.stats = renderer.Render(scene, camera, options, actual.depth, actual.cells);
+      EXPECT_TRUE(actual.stats.byHierarchy);
+      test::ExpectSameFrame(expected, actual,
+                            std::string(below ? "below" : "right of") + " the tiles' edge samples");
+    }
+  }
 }
 
 // Two threads, whatever the triangle count, drawn by clusters only.

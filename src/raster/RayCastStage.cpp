@@ -8,328 +8,20 @@
 #include "geometry/FixedRange.h"
 #include "raster/EdgeFunction.h"
 #include "raster/FixedPoint.h"
+#include "raster/RayCastFrame.h"
+#include "raster/RayTileFrontier.h"
 #include "raster/VertexStage.h"
 
 namespace termshade {
 namespace {
 
-using Floats4 = float __attribute__((vector_size(16)));
-using Ints4 = int32_t __attribute__((vector_size(16)));
-
-Floats4 Load4(const float* p) {
-  Floats4 v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-
-// Both ends of a small object: it may straddle two cache lines.
-template <typename T>
-void PrefetchWhole(const T* p) {
-  static_assert(sizeof(T) <= 64);
-  __builtin_prefetch(p);
-  __builtin_prefetch(reinterpret_cast<const char*>(p) + sizeof(T) - 1);
-}
-
-Floats4 Splat(float x) {
-  return Floats4{x, x, x, x};
-}
-
-Floats4 Min4(Floats4 a, Floats4 b) {
-  return a < b ? a : b;
-}
-Floats4 Max4(Floats4 a, Floats4 b) {
-  return a > b ? a : b;
-}
-
-// Snapping moves a corner 1/512 cell at most; the projection's own rounding
-// is far below the rest.
-constexpr double kSnapCells = 1.0 / 512.0 + 1e-6;
 // Relative slack of a depth bound: float 1/z of a corner, and the
 // interpolation's three roundings (SPEC 5: 1/z interpolated in float).
 constexpr float kDepthSlack = 1e-5F;
 // A tree is at most 91 levels deep (63 Morton bits, then halving up to 2^28
-// triangles), three entries a level and four pushed at once.
+// triangles), three entries a level and four pushed at once, below a tile's
+// TileFrontier::kMaxEntries.
 constexpr int kStackEntries = 512;
-
-// What a frame fixes for every ray.
-struct CastFrame {
-  const Scene& scene;
-  const RayBvh& bvh;
-  const ClusterFrame& frame;
-  int width, height;
-  double rows[3][3];   ///< eyeFromWorld's rotation rows (world vectors)
-  float eye[3];        ///< world
-  float forward[3];    ///< world: the view direction (eye -z)
-  uint32_t depthSide;  ///< per axis bit: forward >= 0 (the near side of a box is its low)
-  float margin;        ///< world units every box is widened by
-  float depthMargin;   ///< subtracted from a box's nearest depth
-  double eyeLength;    ///< |eye|
-  double coordinateReach;  ///< the largest |coordinate| of the eye and the root box
-
-  CastFrame(const Scene& s, const RayBvh& b, const ClusterFrame& f, int w, int h)
-      : scene(s), bvh(b), frame(f), width(w), height(h) {
-    const auto& m = frame.eyeFromWorld.m;
-    for (size_t r = 0; r < 3; ++r) {
-      for (size_t k = 0; k < 3; ++k) rows[r][k] = m[r * 4 + k];
-    }
-    const double eyeWorld[3] = {frame.eyeWorld.x, frame.eyeWorld.y, frame.eyeWorld.z};
-    eyeLength = Length(frame.eyeWorld);
-    depthSide = 0;
-    double farDepth = 0.0, boxReach = 0.0, eyeReach = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      eye[k] = static_cast<float>(eyeWorld[k]);
-      forward[k] = static_cast<float>(-rows[2][k]);
-      if (forward[k] >= 0.0F) depthSide |= 1U << k;
-      farDepth += std::max(-rows[2][k] * (bvh.low[k] - eyeWorld[k]),
-                           -rows[2][k] * (bvh.high[k] - eyeWorld[k]));
-      boxReach =
-          std::max({boxReach, std::fabs(double{bvh.low[k]}), std::fabs(double{bvh.high[k]})});
-      eyeReach = std::max(eyeReach, std::fabs(eyeWorld[k]));
-    }
-    // The beam of a sample's 1/512-cell square reaches a radius of
-    // kSnapCells * sqrt(1 + a^2) / d per unit of depth; rays are
-    // (u - cx) / d across, so their length is at most `reach` per unit depth.
-    const Projection& p = frame.projection;
-    const double across = std::max(std::fabs(p.cx), std::fabs(w - p.cx)) / p.d;
-    const double down = std::max(std::fabs(p.cy), std::fabs(h - p.cy)) * p.cellAspect / p.d;
-    const double reach = std::sqrt(1.0 + across * across + down * down);
-    const double beam = kSnapCells * std::sqrt(1.0 + p.cellAspect * p.cellAspect) / p.d * farDepth;
-    // Float rounding: the eye and the reciprocal direction rounded, the slab
-    // difference and product, each within 2^-24 relative: positions off by
-    // at most about 4e-7 of these magnitudes. (Without the beam term, the
-    // tests' frames differ: the margin is not all rounding slack.)
-    const double rounding = 2e-6 * (eyeReach + boxReach + farDepth * reach);
-    margin = static_cast<float>(beam + rounding);
-    coordinateReach = eyeReach + boxReach;
-    depthMargin = static_cast<float>(2.0 * (beam + rounding));
-  }
-};
-
-// One sample's ray: its direction's reciprocals and the widened planes' offsets.
-struct Ray {
-  float direction[3];
-  Floats4 inverse[3];   ///< 1 / direction, per axis, splat
-  Floats4 nearFrom[3];  ///< eye -+ margin: where the near planes' distances are taken from
-  Floats4 farFrom[3];
-  uint32_t nearIsLow;  ///< per axis bit: direction >= 0
-};
-
-// The world direction from the eye through a sample's center.
-Vec3 SampleDirection(const CastFrame& cast, int col, int row) {
-  const Projection& p = cast.frame.projection;
-  const double across = (col + 0.5 - p.cx) / p.d;
-  const double down = -(row + 0.5 - p.cy) * p.cellAspect / p.d;
-  double d[3];
-  for (int k = 0; k < 3; ++k) {
-    d[k] = cast.rows[0][k] * across + cast.rows[1][k] * down - cast.rows[2][k];
-  }
-  return {d[0], d[1], d[2]};
-}
-
-Ray MakeRay(const CastFrame& cast, int col, int row) {
-  const Vec3 sampleDirection = SampleDirection(cast, col, row);
-  const double directions[3] = {sampleDirection.x, sampleDirection.y, sampleDirection.z};
-  Ray ray{};
-  for (int k = 0; k < 3; ++k) {
-    double direction = directions[k];
-    // No infinite reciprocal: a tiny tilt instead, far inside the margin.
-    if (std::fabs(direction) < 1e-20) direction = direction < 0.0 ? -1e-20 : 1e-20;
-    const auto inverse = static_cast<float>(1.0 / direction);
-    const bool positive = direction >= 0.0;
-    ray.direction[k] = static_cast<float>(direction);
-    ray.inverse[k] = Splat(inverse);
-    const float shift = positive ? cast.margin : -cast.margin;
-    ray.nearFrom[k] = Splat(cast.eye[k] + shift);
-    ray.farFrom[k] = Splat(cast.eye[k] - shift);
-    if (positive) ray.nearIsLow |= 1U << k;
-  }
-  return ray;
-}
-
-// Where the ray's widened beam enters and leaves four boxes (SoA, as
-// RayBvhNode stores them); an empty box (low +inf, high -inf) is never entered.
-struct BoxSpan {
-  Floats4 entry, exit;
-};
-
-BoxSpan BoxSpans(const float* low, const float* high, const Ray& ray) {
-  Floats4 entry = Splat(0.0F), exit = Splat(INFINITY);
-  for (size_t k = 0; k < 3; ++k) {
-    const bool nearLow = (ray.nearIsLow >> k & 1U) != 0;
-    const Floats4 nearPlane = Load4((nearLow ? low : high) + 4 * k);
-    const Floats4 farPlane = Load4((nearLow ? high : low) + 4 * k);
-    entry = Max4(entry, (nearPlane - ray.nearFrom[k]) * ray.inverse[k]);
-    exit = Min4(exit, (farPlane - ray.farFrom[k]) * ray.inverse[k]);
-  }
-  return {entry, exit};
-}
-
-// Four boxes' nearest eye depth, less the depth margin: no corner inside is nearer.
-Floats4 NearestDepths(const CastFrame& cast, const float* low, const float* high) {
-  Floats4 depth = Splat(-cast.depthMargin);
-  for (size_t k = 0; k < 3; ++k) {
-    const bool depthLow = (cast.depthSide >> k & 1U) != 0;
-    depth += (Load4((depthLow ? low : high) + 4 * k) - Splat(cast.eye[k])) * Splat(cast.forward[k]);
-  }
-  return depth;
-}
-
-// A tile's samples: columns [col0, col1), rows [row0, row1).
-struct Tile {
-  int col0, row0, col1, row1;
-};
-
-// The four side planes of the pyramid from the eye through a tile's corner
-// samples, each with its normal towards the inside (world space, double).
-struct TilePlanes {
-  Vec3 normal[4];
-  double offset[4];  ///< normal . eye
-  double widening[4];  ///< margin |normal|_1 and the rounding of the test
-};
-
-TilePlanes MakeTilePlanes(const CastFrame& cast, const Tile& tile) {
-  const Vec3 topLeft = SampleDirection(cast, tile.col0, tile.row0);
-  const Vec3 topRight = SampleDirection(cast, tile.col1 - 1, tile.row0);
-  const Vec3 bottomLeft = SampleDirection(cast, tile.col0, tile.row1 - 1);
-  const Vec3 bottomRight = SampleDirection(cast, tile.col1 - 1, tile.row1 - 1);
-  const Vec3 center = topLeft + topRight + bottomLeft + bottomRight;
-  const Vec3 edges[4][2] = {{topLeft, bottomLeft},
-                            {topRight, bottomRight},
-                            {topLeft, topRight},
-                            {bottomLeft, bottomRight}};
-  const Vec3 eye{cast.eye[0], cast.eye[1], cast.eye[2]};
-  TilePlanes planes{};
-  for (int p = 0; p < 4; ++p) {
-    // Every sample direction of the tile is a convex combination of the
-    // corners', so inside all four planes (a one-sample-wide tile's two
-    // planes coincide: either side holds them).
-    Vec3 n = Cross(edges[p][0], edges[p][1]);
-    if (Dot(n, center) < 0.0) n = n * -1.0;
-    const double l1 = std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z);
-    planes.normal[p] = n;
-    planes.offset[p] = Dot(n, eye);
-    planes.widening[p] = l1 * (double{cast.margin} + 1e-9 * cast.coordinateReach);
-  }
-  return planes;
-}
-
-// Where a tile's rays start: the subtrees its samples' widened beams may
-// enter, found once a tile (the pyramid through its corner samples, boxes
-// widened by the margin, cones applied), farthest first, four a group.
-// Every ray tests the groups' boxes as it would a node's children.
-struct alignas(16) EntryGroup {
-  float low[3][4];
-  float high[3][4];
-  float nearestDepth[4];
-  uint32_t ref[4];  ///< RayBvh::kEmpty in an unused slot (its box empty)
-  uint32_t allFront[4];
-};
-
-struct TileCandidate {
-  uint32_t ref;
-  uint32_t allFront;
-  float nearestDepth;
-  float low[3], high[3];
-};
-
-}  // namespace
-
-struct RayCastStage::WorkerTile {
-  std::vector<TileCandidate> candidates, expanded;
-  std::vector<EntryGroup> groups;
-};
-
-namespace {
-
-class TileFrontier {
- public:
-  explicit TileFrontier(const CastFrame& cast) : cast_(cast) {}
-
-  // Fills work.groups for the tile: at most kMaxEntries subtrees.
-  void Find(const Tile& tile, RayCastStage::WorkerTile& work) const {
-    const TilePlanes planes = MakeTilePlanes(cast_, tile);
-    std::vector<TileCandidate>& list = work.candidates;
-    std::vector<TileCandidate>& next = work.expanded;
-    list.clear();
-    AddChildren(0, 0, planes, list);
-    // Level by level, while the list stays within its size.
-    for (bool grew = true; grew;) {
-      grew = false;
-      next.clear();
-      for (size_t i = 0; i < list.size(); ++i) {
-        const size_t before = next.size();
-        const bool room = before + (list.size() - i) - 1 + 4 <= kMaxEntries;
-        if (room && !RayBvh::IsLeaf(list[i].ref)) {
-          AddChildren(list[i].ref, list[i].allFront, planes, next);
-          grew = true;
-        } else {
-          next.push_back(list[i]);
-        }
-      }
-      list.swap(next);
-    }
-    std::sort(list.begin(), list.end(), [](const TileCandidate& a, const TileCandidate& b) {
-      return a.nearestDepth != b.nearestDepth ? a.nearestDepth > b.nearestDepth : a.ref < b.ref;
-    });
-    Pack(list, work.groups);
-  }
-
-  static constexpr size_t kMaxEntries = 16;
-
- private:
-  // The node's children inside the tile's pyramid, unless its cone faces away.
-  void AddChildren(uint32_t ref, uint32_t allFront, const TilePlanes& planes,
-                   std::vector<TileCandidate>& out) const {
-    const RayBvhNode& node = cast_.bvh.nodes[ref];
-    if (allFront == 0) {
-      const ClusterFacing facing = ConeFacing(node.cone, cast_.frame.eyeWorld, cast_.eyeLength);
-      if (facing == ClusterFacing::kAway) return;
-      allFront = facing == ClusterFacing::kToward ? 1 : 0;
-    }
-    const Floats4 depth = NearestDepths(cast_, &node.low[0][0], &node.high[0][0]);
-    for (int i = 0; i < 4; ++i) {
-      if (node.child[i] == RayBvh::kEmpty || !InPyramid(node, i, planes)) continue;
-      TileCandidate c{node.child[i], allFront, depth[i], {}, {}};
-      for (int k = 0; k < 3; ++k) {
-        c.low[k] = node.low[k][i];
-        c.high[k] = node.high[k][i];
-      }
-      out.push_back(c);
-    }
-  }
-
-  // False when the child's box, widened by the margin, lies wholly outside a plane.
-  static bool InPyramid(const RayBvhNode& node, int child, const TilePlanes& planes) {
-    for (int p = 0; p < 4; ++p) {
-      const Vec3& n = planes.normal[p];
-      const double reach = n.x * (n.x >= 0.0 ? node.high[0][child] : node.low[0][child]) +
-                           n.y * (n.y >= 0.0 ? node.high[1][child] : node.low[1][child]) +
-                           n.z * (n.z >= 0.0 ? node.high[2][child] : node.low[2][child]);
-      if (reach - planes.offset[p] + planes.widening[p] < 0.0) return false;
-    }
-    return true;
-  }
-
-  static void Pack(const std::vector<TileCandidate>& list, std::vector<EntryGroup>& groups) {
-    groups.assign((list.size() + 3) / 4, EntryGroup{});
-    for (size_t g = 0; g < groups.size(); ++g) {
-      EntryGroup& group = groups[g];
-      for (size_t i = 0; i < 4; ++i) {
-        const size_t at = 4 * g + i;
-        const bool used = at < list.size();
-        group.ref[i] = used ? list[at].ref : RayBvh::kEmpty;
-        group.allFront[i] = used ? list[at].allFront : 0;
-        group.nearestDepth[i] = used ? list[at].nearestDepth : INFINITY;
-        for (int k = 0; k < 3; ++k) {
-          group.low[k][i] = used ? list[at].low[k] : INFINITY;
-          group.high[k][i] = used ? list[at].high[k] : -INFINITY;
-        }
-      }
-    }
-  }
-
-  const CastFrame& cast_;
-};
 
 // What a sample has found so far.
 struct SampleResult {
@@ -643,9 +335,9 @@ int RayCastStage::Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame
     laneCount_ = static_cast<size_t>(threads) * kLanes;
     lanes_ = std::make_unique<Lane[]>(laneCount_);
   }
-  if (workerTileCount_ < static_cast<size_t>(threads)) {
-    workerTileCount_ = static_cast<size_t>(threads);
-    workerTiles_ = std::make_unique<WorkerTile[]>(workerTileCount_);
+  if (tileEntriesCount_ < static_cast<size_t>(threads)) {
+    tileEntriesCount_ = static_cast<size_t>(threads);
+    tileEntries_ = std::make_unique<TileEntries[]>(tileEntriesCount_);
   }
   const int tilesAcross = (width + kTileCols - 1) / kTileCols;
   const int tileCount = tilesAcross * ((height + kTileRows - 1) / kTileRows);
@@ -654,7 +346,7 @@ int RayCastStage::Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame
   auto castTiles = [&](int worker) {
     auto& faces = cells.FaceNumbers();
     Lane* const lanes = lanes_.get() + static_cast<size_t>(worker) * kLanes;
-    WorkerTile& work = workerTiles_[static_cast<size_t>(worker)];
+    TileEntries& entries = tileEntries_[static_cast<size_t>(worker)];
     int covered = 0;
     Tile tile{0, 0, 0, 0};
     int col = 0, row = 0;
@@ -669,11 +361,11 @@ int RayCastStage::Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame
         if (index >= tileCount) return false;
         const int col0 = index % tilesAcross * kTileCols, row0 = index / tilesAcross * kTileRows;
         tile = {col0, row0, std::min(width, col0 + kTileCols), std::min(height, row0 + kTileRows)};
-        frontier.Find(tile, work);
+        frontier.Find(tile, entries);
         col = tile.col0;
         row = tile.row0;
       }
-      caster.Start(lane, col++, row, work.groups);
+      caster.Start(lane, col++, row, entries.groups);
       return true;
     };
     int active = 0;

@@ -14,6 +14,8 @@
 
 namespace termshade {
 
+struct TileEntries;
+
 /// The surface pass of zbuffer and cull for scenes of far more triangles
 /// than samples: each cell-center sample finds, through the scene's RayBvh,
 /// the triangles that may cover it (the node boxes widened by the snapping's
@@ -21,7 +23,9 @@ namespace termshade {
 /// rasterizer does (the same snapped corners, edge functions, top-left rule
 /// and float 1/z). The nearest wins (zbuffer: lower face on equal depth) or
 /// the last in scene order (cull), so every cell's face and depth are bit for
-/// bit those of ClusterStage. Rows are shared out among threads.
+/// bit those of ClusterStage. Samples are handed out in tiles, one at a time
+/// to any thread; each tile's rays start below the subtrees its pyramid
+/// reaches (RayTileFrontier).
 class RayCastStage {
  public:
   RayCastStage();
@@ -37,8 +41,6 @@ class RayCastStage {
   /// tile's rays start below the subtrees its pyramid reaches.
   static constexpr int kTileCols = 8;
   static constexpr int kTileRows = 4;
-  /// One worker's tile in progress (RayCastStage.cpp).
-  struct WorkerTile;
 
   /// True when the frame is one the stage draws exactly: one sample a cell,
   /// back faces culled, double geometry and float 1/z, and every vertex on
@@ -85,8 +87,8 @@ class RayCastStage {
   std::vector<int> coveredPerWorker_;
   std::unique_ptr<Lane[]> lanes_;  ///< kLanes a worker
   size_t laneCount_ = 0;
-  std::unique_ptr<WorkerTile[]> workerTiles_;  ///< one a worker
-  size_t workerTileCount_ = 0;
+  std::unique_ptr<TileEntries[]> tileEntries_;  ///< one a worker
+  size_t tileEntriesCount_ = 0;
 };
 
 }  // namespace termshade
