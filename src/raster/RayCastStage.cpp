@@ -43,7 +43,7 @@ struct StackEntry {
 // arrives while the others step.
 }  // namespace
 
-struct RayCastStage::Lane {
+struct alignas(64) RayCastStage::Lane {
   enum class Phase : uint8_t { kWalk, kLeafTriangles, kLeafCorners, kLeafTest, kIdle };
   Phase phase = Phase::kIdle;
   int col = 0, row = 0;

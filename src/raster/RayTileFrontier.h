@@ -35,7 +35,7 @@ struct TileCandidate {
 };
 
 /// One worker's tile: its entries and the scratch lists that find them.
-struct TileEntries {
+struct alignas(64) TileEntries {
   std::vector<TileCandidate> candidates, expanded;
   std::vector<EntryGroup> groups;
 };
