@@ -187,17 +187,28 @@ class EventLoop {
       detailJob_.reset();
       dirty_ = true;
     }
-    if (!detailJob_ && !hierarchyJob_ && !job_ && framesDrawn_ > 0 && state_.WantsLevels()) {
+    if (!detailJob_ && !hierarchyJob_ && !job_ && framesDrawn_ > 0 && state_.WantsLevels() &&
+        !WantsHierarchy()) {
       detailJob_ = std::make_unique<DetailJob>(state_.SharedScene(), BuildLevels);
     }
   }
 
-  // The triangle hierarchy of a big scene (RayCastStage) when frames are
-  // exact (with --lod auto a simplified level draws where the rays would pay):
-  // built on a worker once the first frame is up and no other job runs,
-  // attached when done (frames then cast rays through it: the same frames,
-  // sooner); tried
-  // once per scene.
+  // Whether the scene's hierarchy is still to be built: frames of this
+  // size would cast rays through one, and none was tried for the scene.
+  // It comes before the levels of detail (4x to 6x quicker to build):
+  // exact frames by rays while the levels are being made, and wherever the
+  // view later needs the exact scene (close up).
+  bool WantsHierarchy() const {
+    const std::shared_ptr<const Scene>& scene = state_.SharedScene();
+    return scene && hierarchyTriedFor_.lock() != scene &&
+           RayCastStage::WouldCast(*scene, cells_.WidthCells(), cells_.HeightCells(),
+                                   frameOptions_);
+  }
+
+  // The triangle hierarchy of a big scene (RayCastStage): built on a worker
+  // once the first frame is up and no other job runs (before the levels of
+  // detail), attached when done (frames of the exact scene then cast rays
+  // through it: the same frames, sooner); tried once per scene.
   void UpdateHierarchyJob() {
     const std::shared_ptr<const Scene>& scene = state_.SharedScene();
     if (hierarchyJob_ && hierarchyJob_->ForScene() != scene) {
@@ -210,10 +221,7 @@ class EventLoop {
       hierarchyJob_->ForScene()->hierarchy.Attach(std::move(bvh));
       hierarchyJob_.reset();
     }
-    if (!hierarchyJob_ && !detailJob_ && !job_ && framesDrawn_ > 0 && scene &&
-        state_.Detail() == DetailMode::kOff && hierarchyTriedFor_.lock() != scene &&
-        RayCastStage::WouldCast(*scene, cells_.WidthCells(), cells_.HeightCells(),
-                                  frameOptions_)) {
+    if (!hierarchyJob_ && !detailJob_ && !job_ && framesDrawn_ > 0 && WantsHierarchy()) {
       hierarchyTriedFor_ = scene;
       hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
     }
