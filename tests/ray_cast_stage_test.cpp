@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <numbers>
@@ -146,6 +147,39 @@ TEST(RayBvh, EveryCornerAndNormalLiesInsideItsNodes) {
 
 // Wherever ConeFacing says a node's faces all face away, none faces the
 // point; where it says all face it, every one does.
+// Member by member (not the padding), floats by their bits.
+bool SameNode(const RayBvhNode& a, const RayBvhNode& b) {
+  const RayBvhCone &ca = a.cone, &cb = b.cone;
+  return std::memcmp(a.low, b.low, sizeof a.low) == 0 &&
+         std::memcmp(a.high, b.high, sizeof a.high) == 0 &&
+         std::memcmp(a.slabLow, b.slabLow, sizeof a.slabLow) == 0 &&
+         std::memcmp(a.slabHigh, b.slabHigh, sizeof a.slabHigh) == 0 &&
+         std::memcmp(a.child, b.child, sizeof a.child) == 0 &&
+         std::memcmp(ca.center, cb.center, sizeof ca.center) == 0 &&
+         std::memcmp(ca.axis, cb.axis, sizeof ca.axis) == 0 &&
+         std::memcmp(&ca.coneCos, &cb.coneCos, sizeof ca.coneCos) == 0 &&
+         std::memcmp(&ca.heightMin, &cb.heightMin, sizeof ca.heightMin) == 0 &&
+         std::memcmp(&ca.heightMax, &cb.heightMax, sizeof ca.heightMax) == 0;
+}
+
+// Big scenes build the root's subtrees on two threads: the same hierarchy,
+// node for node in the same order, as one thread builds.
+TEST(RayBvh, TwoThreadsBuildTheOneThreadHierarchy) {
+  for (const size_t triangles : {size_t{120000}, size_t{300000}}) {
+    const Scene scene = PrepareScene(GenerateTriangleSphere(triangles));
+    const RayBvh one = BuildRayBvh(scene, nullptr, 1);
+    const RayBvh two = BuildRayBvh(scene, nullptr, 2);
+    ASSERT_EQ(one.nodes.size(), two.nodes.size()) << triangles;
+    EXPECT_EQ(one.triangles, two.triangles) << triangles;
+    size_t differing = 0;
+    for (size_t n = 0; n < one.nodes.size(); ++n) {
+      differing += SameNode(one.nodes[n], two.nodes[n]) ? 0 : 1;
+    }
+    EXPECT_EQ(differing, 0U) << triangles << " triangles: nodes differ";
+    ExpectBoundsHold(scene, std::to_string(triangles) + "-triangle sphere, two threads");
+  }
+}
+
 TEST(RayBvh, FacingVerdictsHoldForEveryFace) {
   const std::vector<std::pair<std::string, Scene>> scenes = [] {
     std::vector<std::pair<std::string, Scene>> named;

@@ -157,10 +157,20 @@ std::vector<Keyed> SortedByMorton(const Scene& scene, const Box& sceneBox) {
   return keys;
 }
 
+// Up to four parts of a sorted range [begin, end).
+struct Parts {
+  std::pair<size_t, size_t> range[4];
+  int count = 0;
+};
+
 class Builder {
  public:
-  Builder(const Scene& scene, RayBvh& bvh, std::vector<Keyed> keys, const std::atomic<bool>* cancel)
-      : scene_(scene), bvh_(bvh), keys_(std::move(keys)), cancel_(cancel) {}
+  /// Nodes go to `nodes` (children by their index there), triangle indices
+  /// to `triangles` (the sorted positions): builders of disjoint ranges may
+  /// run at once, each with its own nodes.
+  Builder(const Scene& scene, const std::vector<Keyed>& keys, uint32_t* triangles,
+          std::vector<RayBvhNode>& nodes, const std::atomic<bool>* cancel)
+      : scene_(scene), keys_(keys), triangles_(triangles), nodes_(nodes), cancel_(cancel) {}
 
   struct Built {
     uint32_t ref;
@@ -169,63 +179,77 @@ class Builder {
   };
 
   // The subtree over sorted triangles [begin, end): a leaf when few, else a
-  // node of up to four children (Morton splits of its largest part).
+  // node of up to four children (Morton splits of its largest part), before
+  // its descendants in `nodes`.
   Built Build(size_t begin, size_t end) {
     if (end - begin <= RayBvh::kLeafTriangles) return Leaf(begin, end);
     if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed))
       return {RayBvh::kEmpty, {}, {}};
-    const auto node = static_cast<uint32_t>(bvh_.nodes.size());
-    bvh_.nodes.emplace_back();
-    // Up to four children: the largest part split again while any part
-    // is more than a leaf (fuller nodes make a shallower tree).
-    std::pair<size_t, size_t> parts[4] = {{begin, end}};
-    int partCount = 1;
+    const auto node = static_cast<uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    const Parts parts = Split(begin, end);
+    Built children[4];
+    for (int i = 0; i < parts.count; ++i) {
+      children[i] = Build(parts.range[i].first, parts.range[i].second);
+    }
+    return Finish(node, parts, children);
+  }
+
+  // Up to four children: the largest part split again while any part is
+  // more than a leaf (fuller nodes make a shallower tree).
+  Parts Split(size_t begin, size_t end) const {
+    Parts parts;
+    parts.range[0] = {begin, end};
+    parts.count = 1;
     if (end - begin <= size_t{4} * RayBvh::kLeafTriangles) {
       // Few enough for full leaves: runs of the Morton order, which lie together.
-      partCount = 0;
+      parts.count = 0;
       for (size_t b = begin; b < end; b += RayBvh::kLeafTriangles) {
-        parts[partCount++] = {b, std::min(end, b + RayBvh::kLeafTriangles)};
+        parts.range[parts.count++] = {b, std::min(end, b + RayBvh::kLeafTriangles)};
       }
     }
-    while (partCount < 4) {
+    auto size = [&](int i) { return parts.range[i].second - parts.range[i].first; };
+    while (parts.count < 4) {
       int largest = -1;
-      for (int i = 0; i < partCount; ++i) {
-        const size_t size = parts[i].second - parts[i].first;
-        if (size > RayBvh::kLeafTriangles &&
-            (largest < 0 || size > parts[largest].second - parts[largest].first)) {
+      for (int i = 0; i < parts.count; ++i) {
+        if (size(i) > RayBvh::kLeafTriangles && (largest < 0 || size(i) > size(largest))) {
           largest = i;
         }
       }
       if (largest < 0) break;
-      const auto [b, e] = parts[largest];
-      const size_t middle = Split(b, e);
-      for (int i = partCount; i > largest + 1; --i) parts[i] = parts[i - 1];
-      parts[largest] = {b, middle};
-      parts[largest + 1] = {middle, e};
-      ++partCount;
+      const auto [b, e] = parts.range[largest];
+      const size_t middle = MortonSplit(b, e);
+      for (int i = parts.count; i > largest + 1; --i) parts.range[i] = parts.range[i - 1];
+      parts.range[largest] = {b, middle};
+      parts.range[largest + 1] = {middle, e};
+      ++parts.count;
     }
+    return parts;
+  }
+
+  // Node `node` of `nodes` over its built children: boxes, cone and slabs.
+  Built Finish(uint32_t node, const Parts& parts, const Built* children) {
     Box box;
     RayBvhNode filled{};
     Cone cones[4];
     for (int i = 0; i < 4; ++i) {
       Box childBox;
       filled.child[i] = RayBvh::kEmpty;
-      if (i < partCount) {
-        const Built child = Build(parts[i].first, parts[i].second);
-        filled.child[i] = child.ref;
-        childBox = child.box;
-        cones[i] = child.cone;
+      if (i < parts.count) {
+        filled.child[i] = children[i].ref;
+        childBox = children[i].box;
+        cones[i] = children[i].cone;
         box.Add(childBox);
       }
       for (int k = 0; k < 3; ++k) {
         // An empty child: low +inf, high -inf, which no ray reaches.
-        filled.low[k][i] = i < partCount ? Down(childBox.low[k]) : INFINITY;
-        filled.high[k][i] = i < partCount ? Up(childBox.high[k]) : -INFINITY;
+        filled.low[k][i] = i < parts.count ? Down(childBox.low[k]) : INFINITY;
+        filled.high[k][i] = i < parts.count ? Up(childBox.high[k]) : -INFINITY;
       }
     }
-    Cone cone = MergeCones(cones, partCount, box, filled.cone);
-    SetSlabs(parts, partCount, filled);
-    bvh_.nodes[node] = filled;
+    Cone cone = MergeCones(cones, parts.count, box, filled.cone);
+    SetSlabs(parts.range, parts.count, filled);
+    nodes_[node] = filled;
     return {node, box, cone};
   }
 
@@ -237,7 +261,7 @@ class Builder {
     bool anyFacing = false, anyDegenerate = false;
     for (size_t i = begin; i < end; ++i) {
       const uint32_t t = keys_[i].triangle;
-      bvh_.triangles[i] = t;
+      triangles_[i] = t;
       for (const uint32_t v : scene_.triangles[t].vertices) box.Add(scene_.verticesWorld[v]);
       const Vec3 n = scene_.facePlanesWorld[scene_.TriangleFace(t)].normal;
       anyFacing = anyFacing || Dot(n, n) != 0.0;
@@ -330,7 +354,7 @@ class Builder {
 
   // Where [begin, end) splits: at the highest bit in which its codes differ
   // (they are sorted, so one binary search), or in half where all are equal.
-  size_t Split(size_t begin, size_t end) const {
+  size_t MortonSplit(size_t begin, size_t end) const {
     const uint64_t first = keys_[begin].code, last = keys_[end - 1].code;
     if (first == last) return begin + (end - begin) / 2;
     const uint64_t bit = std::bit_floor(first ^ last);
@@ -341,10 +365,49 @@ class Builder {
   }
 
   const Scene& scene_;
-  RayBvh& bvh_;
-  std::vector<Keyed> keys_;
+  const std::vector<Keyed>& keys_;
+  uint32_t* triangles_;
+  std::vector<RayBvhNode>& nodes_;
   const std::atomic<bool>* cancel_;
 };
+
+// From this many triangles the root's subtrees are built on two threads.
+constexpr size_t kTwoThreadsFrom = 100000;
+
+// The whole tree from a root node, the root's children split between this
+// thread and another: this one builds the first parts straight after the
+// root, the other the rest into its own nodes, appended after (child
+// indices moved): the nodes come out in the one-thread order.
+void BuildOnTwoThreads(const Scene& scene, const std::vector<Keyed>& keys,
+                       const std::atomic<bool>* cancel, RayBvh& bvh) {
+  Builder first(scene, keys, bvh.triangles.data(), bvh.nodes, cancel);
+  bvh.nodes.emplace_back();
+  const Parts parts = first.Split(0, keys.size());
+  // The first parts on this thread, about half the triangles.
+  int split = 1;
+  while (split + 1 < parts.count && parts.range[split].second <= keys.size() / 2) ++split;
+  std::vector<RayBvhNode> rest;
+  rest.reserve((keys.size() - parts.range[split].first) / 2 + 1);
+  AdviseHugePages(rest);
+  Builder second(scene, keys, bvh.triangles.data(), rest, cancel);
+  Builder::Built children[4];
+  RunOnLoadThreads(2, [&](int thread) {
+    for (int i = thread == 0 ? 0 : split; i < (thread == 0 ? split : parts.count); ++i) {
+      children[i] =
+          (thread == 0 ? first : second).Build(parts.range[i].first, parts.range[i].second);
+    }
+  });
+  const auto offset = static_cast<uint32_t>(bvh.nodes.size());
+  auto moved = [offset](uint32_t ref) {
+    return ref == RayBvh::kEmpty || RayBvh::IsLeaf(ref) ? ref : ref + offset;
+  };
+  for (RayBvhNode node : rest) {
+    for (uint32_t& child : node.child) child = moved(child);
+    bvh.nodes.push_back(node);
+  }
+  for (int i = split; i < parts.count; ++i) children[i].ref = moved(children[i].ref);
+  first.Finish(0, parts, children);
+}
 
 }  // namespace
 
@@ -382,10 +445,11 @@ bool RayBvh::BuiltFor(const Scene& scene) const {
          vertexCount == scene.verticesWorld.size();
 }
 
-RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel) {
+RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel, int threads) {
   RayBvh bvh;
   const size_t count = scene.triangles.size();
   if (count == 0 || count >= RayBvh::kMaxTriangles) return bvh;
+  if (threads <= 0) threads = LoadThreadCount(count);
   // Step 1: the box of every vertex a triangle uses, and the Morton order.
   Box sceneBox;
   for (const SceneTriangle& t : scene.triangles) {
@@ -394,14 +458,15 @@ RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel) {
   std::vector<Keyed> keys = SortedByMorton(scene, sceneBox);
   if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return {};
   // Step 2: the tree, depth first from a root node (a root that would be a
-  // lone leaf becomes a node with one leaf child).
+  // lone leaf becomes a node with one leaf child), the root's subtrees on
+  // two threads for big scenes (the same nodes in the same order).
   // Every frame reads both at random: huge pages spare a TLB miss a read.
   bvh.triangles.reserve(count);
   AdviseHugePages(bvh.triangles);
   bvh.triangles.resize(count);
   bvh.nodes.reserve(count / 2 + 1);
   AdviseHugePages(bvh.nodes);
-  Builder builder(scene, bvh, std::move(keys), cancel);
+  Builder builder(scene, keys, bvh.triangles.data(), bvh.nodes, cancel);
   if (count <= RayBvh::kLeafTriangles) {
     bvh.nodes.emplace_back();
     const Builder::Built leaf = builder.Build(0, count);
@@ -416,6 +481,8 @@ RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel) {
         root.high[k][i] = i == 0 ? Up(leaf.box.high[k]) : -INFINITY;
       }
     }
+  } else if (threads >= 2 && count >= kTwoThreadsFrom) {
+    BuildOnTwoThreads(scene, keys, cancel, bvh);
   } else {
     builder.Build(0, count);
   }

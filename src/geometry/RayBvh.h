@@ -86,7 +86,9 @@ struct RayBvh {
 };
 
 /// Builds the hierarchy. A set `cancel` stops it early with an empty one;
-/// scenes of kMaxTriangles or more get an empty one.
-RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel = nullptr);
+/// scenes of kMaxTriangles or more get an empty one. `threads` 0: the load
+/// threads' count for the scene; from two, big scenes build the root's
+/// subtrees on two threads (the same hierarchy, byte for byte).
+RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel = nullptr, int threads = 0);
 
 }  // namespace termshade
