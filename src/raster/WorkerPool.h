@@ -1,7 +1,7 @@
 #pragma once
 
-#include <condition_variable>
-#include <mutex>
+#include <atomic>
+#include <cstdint>
 #include <thread>
 #include <vector>
 
@@ -9,7 +9,9 @@ namespace termshade {
 
 /// Threads kept for the life of the pool: Run hands the same job to every
 /// one of them (the caller's thread is worker 0) and returns when all are
-/// done, so a frame loop creates no threads per frame.
+/// done, so a frame loop creates no threads per frame. A worker that has
+/// finished a job spins briefly before it sleeps (as OpenMP runtimes do), so
+/// back-to-back jobs start without a wake-up's system call and latency.
 class WorkerPool {
  public:
   explicit WorkerPool(int workers);
@@ -29,16 +31,18 @@ class WorkerPool {
   using ErasedJob = void (*)(void* context, int worker);
   void RunErased(ErasedJob job, void* context);
   void Loop(int worker);
+  /// Waits until generation_ differs from `seen` and returns it.
+  uint32_t AwaitGeneration(uint32_t seen);
+  void AwaitWorkersDone();
 
   std::vector<std::thread> threads_;
-  std::mutex mutex_;
-  std::condition_variable start_;
-  std::condition_variable done_;
-  ErasedJob job_ = nullptr;
+  ErasedJob job_ = nullptr;  ///< published by generation_'s increment
   void* context_ = nullptr;
-  unsigned long generation_ = 0;
-  int running_ = 0;
   bool stop_ = false;
+  std::atomic<uint32_t> generation_{0};  ///< bumped for each job (and to stop)
+  std::atomic<int> sleepingWorkers_{0};  ///< workers blocked on generation_
+  std::atomic<int> running_{0};          ///< workers still in this job
+  std::atomic<bool> callerSleeping_{false};
 };
 
 /// The thread count a frame uses for `requested` (0: every core).
