@@ -82,8 +82,13 @@ void ExpectBoundsHold(const Scene& scene, const std::string& what) {
     ASSERT_GE(RayBvh::LeafCount(ref), 1U) << what;
     ASSERT_LE(RayBvh::LeafCount(ref), RayBvh::kLeafTriangles) << what;
     for (uint32_t i = 0; i < RayBvh::LeafCount(ref); ++i) {
-      const uint32_t t = bvh.triangles[RayBvh::LeafFirst(ref) + i];
+      const RayBvhLeafTriangle& record = bvh.triangles[RayBvh::LeafFirst(ref) + i];
+      const uint32_t t = record.triangle;
+      ASSERT_LT(t, scene.triangles.size()) << what;
       ++seen[t];
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_EQ(record.vertices[k], scene.triangles[t].vertices[k]) << what << ": triangle " << t;
+      }
       for (const uint32_t v : scene.triangles[t].vertices) {
         for (const Slot& slot : path) {
           ASSERT_TRUE(InSlot(bvh.nodes[slot.node], slot.child, scene.verticesWorld[v]))
@@ -119,7 +124,7 @@ std::vector<uint32_t> FacesBelow(const RayBvh& bvh, const Scene& scene, uint32_t
     refs.pop_back();
     if (RayBvh::IsLeaf(ref)) {
       for (uint32_t i = 0; i < RayBvh::LeafCount(ref); ++i) {
-        faces.push_back(scene.TriangleFace(bvh.triangles[RayBvh::LeafFirst(ref) + i]));
+        faces.push_back(scene.TriangleFace(bvh.triangles[RayBvh::LeafFirst(ref) + i].triangle));
       }
       continue;
     }

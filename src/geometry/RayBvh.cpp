@@ -168,7 +168,7 @@ class Builder {
   /// Nodes go to `nodes` (children by their index there), triangle indices
   /// to `triangles` (the sorted positions): builders of disjoint ranges may
   /// run at once, each with its own nodes.
-  Builder(const Scene& scene, const std::vector<Keyed>& keys, uint32_t* triangles,
+  Builder(const Scene& scene, const std::vector<Keyed>& keys, RayBvhLeafTriangle* triangles,
           std::vector<RayBvhNode>& nodes, const std::atomic<bool>* cancel)
       : scene_(scene), keys_(keys), triangles_(triangles), nodes_(nodes), cancel_(cancel) {}
 
@@ -261,7 +261,8 @@ class Builder {
     bool anyFacing = false, anyDegenerate = false;
     for (size_t i = begin; i < end; ++i) {
       const uint32_t t = keys_[i].triangle;
-      triangles_[i] = t;
+      const auto& corners = scene_.triangles[t].vertices;
+      triangles_[i] = {{corners[0], corners[1], corners[2]}, t};
       for (const uint32_t v : scene_.triangles[t].vertices) box.Add(scene_.verticesWorld[v]);
       const Vec3 n = scene_.facePlanesWorld[scene_.TriangleFace(t)].normal;
       anyFacing = anyFacing || Dot(n, n) != 0.0;
@@ -366,7 +367,7 @@ class Builder {
 
   const Scene& scene_;
   const std::vector<Keyed>& keys_;
-  uint32_t* triangles_;
+  RayBvhLeafTriangle* triangles_;
   std::vector<RayBvhNode>& nodes_;
   const std::atomic<bool>* cancel_;
 };

@@ -43,6 +43,15 @@ struct alignas(64) RayBvhNode {
   RayBvhCone cone;  ///< its axis is the slabs' axis
 };
 
+/// One triangle of a leaf as the rays read it: its corners' vertex indices
+/// and its scene index, so a leaf's four triangles are one cache line
+/// fetched with the node that points to it (no scene triangle read between).
+struct RayBvhLeafTriangle {
+  uint32_t vertices[3];
+  uint32_t triangle;  ///< index in Scene::triangles
+  bool operator==(const RayBvhLeafTriangle&) const = default;
+};
+
 /// Which way the faces of the cone's node turn as seen from pWorld:
 /// conservative, so kAway and kToward hold for every face
 /// (FacePlane::FacesPoint, rounding included); pLength = |pWorld|.
@@ -61,9 +70,9 @@ struct RayBvh {
   /// keep a triangle offset in 28 bits).
   static constexpr size_t kMaxTriangles = size_t{1} << 28;
 
-  std::vector<RayBvhNode> nodes;    ///< nodes[0] is the root (when not empty)
-  std::vector<uint32_t> triangles;  ///< scene triangle indices; each leaf a run of them
-  float low[3] = {0, 0, 0};         ///< the root's box, world space
+  std::vector<RayBvhNode> nodes;              ///< nodes[0] is the root (when not empty)
+  std::vector<RayBvhLeafTriangle> triangles;  ///< each leaf a run of them
+  float low[3] = {0, 0, 0};                   ///< the root's box, world space
   float high[3] = {0, 0, 0};
   /// The triangles and vertices it was built over (their arrays and counts).
   const void* trianglesData = nullptr;
@@ -80,7 +89,7 @@ struct RayBvh {
 
   bool Empty() const { return nodes.empty(); }
   size_t Bytes() const {
-    return nodes.size() * sizeof(RayBvhNode) + triangles.size() * sizeof(uint32_t);
+    return nodes.size() * sizeof(RayBvhNode) + triangles.size() * sizeof(RayBvhLeafTriangle);
   }
   bool BuiltFor(const Scene& scene) const;
 };

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <span>
 
 #include "geometry/FixedRange.h"
 #include "raster/EdgeFunction.h"
@@ -38,19 +39,18 @@ struct StackEntry {
 };
 
 // One sample's walk in progress. A walk waits on memory at every step (the
-// next node, a leaf's triangles, their corners), so a worker keeps several
+// next node or leaf, a leaf's corners), so a worker keeps several
 // walks and steps each in turn: what one step asks for is prefetched and
 // arrives while the others step.
 }  // namespace
 
 struct alignas(64) RayCastStage::Lane {
-  enum class Phase : uint8_t { kWalk, kLeafTriangles, kLeafCorners, kLeafTest, kIdle };
+  enum class Phase : uint8_t { kWalk, kLeafFaces, kLeafTest, kIdle };
   Phase phase = Phase::kIdle;
   int col = 0, row = 0;
   int top = 0;
   uint32_t leaf = 0;
   uint32_t leafAllFront = 0;
-  uint32_t triangles[RayBvh::kLeafTriangles] = {};
   Ray ray{};
   SampleResult result;
   StackEntry stack[kStackEntries] = {};
@@ -86,27 +86,10 @@ class SampleCaster {
   // One step of the lane's walk; false once it has its result.
   bool Step(Lane& lane) const {
     switch (lane.phase) {
-      case Lane::Phase::kLeafTriangles: {
-        const uint32_t* const ids = cast_.bvh.triangles.data() + RayBvh::LeafFirst(lane.leaf);
-        for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
-          lane.triangles[i] = ids[i];
-          PrefetchWhole(&cast_.scene.triangles[ids[i]]);
-          if (lane.leafAllFront == 0 && !cast_.scene.triangleFaces.empty()) {
-            __builtin_prefetch(&cast_.scene.triangleFaces[ids[i]]);
-          }
-        }
-        lane.phase = Lane::Phase::kLeafCorners;
-        return true;
-      }
-      case Lane::Phase::kLeafCorners:
-        for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
-          const uint32_t t = lane.triangles[i];
-          for (const uint32_t v : cast_.scene.triangles[t].vertices) {
-            PrefetchWhole(&cast_.scene.verticesWorld[v]);
-          }
-          if (lane.leafAllFront == 0) {
-            __builtin_prefetch(&cast_.scene.facePlanesWorld[cast_.scene.TriangleFace(t)]);
-          }
+      case Lane::Phase::kLeafFaces:  // facing will be tested: the face planes
+        for (const RayBvhLeafTriangle& record : LeafRecords(lane.leaf)) {
+          __builtin_prefetch(
+              &cast_.scene.facePlanesWorld[cast_.scene.TriangleFace(record.triangle)]);
         }
         lane.phase = Lane::Phase::kLeafTest;
         return true;
@@ -123,6 +106,10 @@ class SampleCaster {
   }
 
  private:
+  std::span<const RayBvhLeafTriangle> LeafRecords(uint32_t leaf) const {
+    return {cast_.bvh.triangles.data() + RayBvh::LeafFirst(leaf), RayBvh::LeafCount(leaf)};
+  }
+
   // Pops to the next entry worth visiting: a node's children are pushed
   // (their memory requested), a leaf's triangle list requested.
   bool Walk(Lane& lane) const {
@@ -132,12 +119,18 @@ class SampleCaster {
       const StackEntry entry = lane.stack[--lane.top];
       if (bestW > 0.0F && entry.nearestDepth * bestW > 1.0F + kDepthSlack) continue;
       if (RayBvh::IsLeaf(entry.ref)) {
+        // Its records were requested when it was pushed: their corners now
+        // (and, when facing is to be tested, their faces).
         lane.leaf = entry.ref;
         lane.leafAllFront = entry.allFront;
-        const uint32_t* const ids = cast_.bvh.triangles.data() + RayBvh::LeafFirst(entry.ref);
-        __builtin_prefetch(ids);
-        __builtin_prefetch(ids + RayBvh::LeafCount(entry.ref) - 1);
-        lane.phase = Lane::Phase::kLeafTriangles;
+        const bool facesNeeded = entry.allFront == 0;
+        for (const RayBvhLeafTriangle& record : LeafRecords(entry.ref)) {
+          for (const uint32_t v : record.vertices) PrefetchWhole(&cast_.scene.verticesWorld[v]);
+          if (facesNeeded && !cast_.scene.triangleFaces.empty()) {
+            __builtin_prefetch(&cast_.scene.triangleFaces[record.triangle]);
+          }
+        }
+        lane.phase = facesNeeded ? Lane::Phase::kLeafFaces : Lane::Phase::kLeafTest;
         return true;
       }
       // Subtrees facing away (the far side) are dropped by their cones;
@@ -191,7 +184,11 @@ class SampleCaster {
         --at;
       }
       found[at] = {node.child[i], depth[i], allFront};
-      if (!RayBvh::IsLeaf(node.child[i])) {
+      if (RayBvh::IsLeaf(node.child[i])) {
+        const std::span<const RayBvhLeafTriangle> records = LeafRecords(node.child[i]);
+        __builtin_prefetch(records.data());
+        __builtin_prefetch(&records.back().triangle);
+      } else {
         const auto* const line = reinterpret_cast<const char*>(&cast_.bvh.nodes[node.child[i]]);
         static_assert(sizeof(RayBvhNode) == 192);  // three lines (aligned to one)
         __builtin_prefetch(line);
@@ -220,10 +217,9 @@ class SampleCaster {
           ProjectDirect(cast_.frame.eyeFromWorld, cast_.frame.projection, scene.verticesWorld[v]);
       return projected[knownCount++];
     };
-    for (uint32_t i = 0; i < RayBvh::LeafCount(lane.leaf); ++i) {
-      const uint32_t t = lane.triangles[i];
-      const auto& v = scene.triangles[t].vertices;
-      TestTriangle(t, corner(v[0]), corner(v[1]), corner(v[2]), lane);
+    for (const RayBvhLeafTriangle& record : LeafRecords(lane.leaf)) {
+      const auto& v = record.vertices;
+      TestTriangle(record.triangle, corner(v[0]), corner(v[1]), corner(v[2]), lane);
     }
   }
 
