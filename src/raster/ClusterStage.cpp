@@ -126,11 +126,11 @@ bool ClusterStage::Usable(const Scene& scene) {
          clusters.back().triangleEnd == scene.triangles.size();
 }
 
-int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int threads,
+int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, WorkerPool* pool,
                        DepthBuffer& depth, CellBuffer& cells) {
-  if (threads > 1 && !frame.scanline && frame.sink == nullptr &&
+  if (pool != nullptr && pool->Workers() > 1 && !frame.scanline && frame.sink == nullptr &&
       scene.triangles.size() >= frame.threadsFromTriangles) {
-    return DrawThreaded(scene, frame, threads, depth, cells);
+    return DrawThreaded(scene, frame, *pool, depth, cells);
   }
   const int width = cells.WidthCells(), height = cells.HeightCells();
   ResizeWithHugePages(raster_, scene.verticesWorld.size());
@@ -156,9 +156,9 @@ int ClusterStage::Draw(const Scene& scene, const ClusterFrame& frame, int thread
   return drawn;
 }
 
-int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, int threads,
+int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, WorkerPool& pool,
                                DepthBuffer& depth, CellBuffer& cells) {
-  if (!pool_ || pool_->Workers() != threads) pool_ = std::make_unique<WorkerPool>(threads);
+  const int threads = pool.Workers();
   const int width = cells.WidthCells(), height = cells.HeightCells();
   const auto& clusters = scene.clusters.clusters;
   // Many more runs than threads: which clusters face the eye is uneven along the scene order.
@@ -177,7 +177,7 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
     ProjectRange(scene, frame, count * worker / threads, count * (worker + 1) / threads,
                  raster_.data(), codes_.data());
   };
-  pool_->Run(project);
+  pool.Run(project);
 
   // Step 2: runs of clusters set up in parallel, triangles binned by row band.
   nextTask_ = 0;
@@ -206,7 +206,7 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
       drawnPerRun_[run] = drawn;
     }
   };
-  pool_->Run(setUp);
+  pool.Run(setUp);
 
   // Step 3: each band drawn by one thread, the runs in scene order.
   nextTask_ = 0;
@@ -221,7 +221,7 @@ int ClusterStage::DrawThreaded(const Scene& scene, const ClusterFrame& frame, in
       }
     }
   };
-  pool_->Run(drawBands);
+  pool.Run(drawBands);
   int drawn = 0;
   for (int d : drawnPerRun_) drawn += d;
   return drawn;

@@ -54,8 +54,9 @@ class ClusterStage {
   /// True when the scene carries clusters for all its triangles.
   static bool Usable(const Scene& scene);
 
-  /// Draws; returns the triangles rasterized (as the face-by-face loop counts them).
-  int Draw(const Scene& scene, const ClusterFrame& frame, int threads, DepthBuffer& depth,
+  /// Draws, on the pool's workers when given (big scenes without a sink);
+  /// returns the triangles rasterized (as the face-by-face loop counts them).
+  int Draw(const Scene& scene, const ClusterFrame& frame, WorkerPool* pool, DepthBuffer& depth,
            CellBuffer& cells);
 
  private:
@@ -64,10 +65,9 @@ class ClusterStage {
     uint32_t faceNumber;
   };
 
-  int DrawThreaded(const Scene& scene, const ClusterFrame& frame, int threads, DepthBuffer& depth,
-                   CellBuffer& cells);
+  int DrawThreaded(const Scene& scene, const ClusterFrame& frame, WorkerPool& pool,
+                   DepthBuffer& depth, CellBuffer& cells);
 
-  std::unique_ptr<WorkerPool> pool_;
   std::vector<RasterVertex> raster_;  ///< per scene vertex, this frame
   std::vector<uint8_t> codes_;
   std::vector<std::vector<Binned>> bins_;  ///< [run * bands + band]

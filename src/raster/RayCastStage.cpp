@@ -320,12 +320,12 @@ bool RayCastStage::WouldCast(const Scene& scene, int widthCells, int heightCells
 }
 
 int RayCastStage::Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame& frame,
-                       int threads, DepthBuffer& depth, CellBuffer& cells) {
+                       WorkerPool* pool, DepthBuffer& depth, CellBuffer& cells) {
   const int width = cells.WidthCells(), height = cells.HeightCells();
   const CastFrame cast(scene, bvh, frame, width, height);
   const SampleCaster caster(cast);
   const bool writesDepth = frame.rule != DepthRule::kCoverOnly;
-  threads = std::max(1, threads);
+  const int threads = pool != nullptr ? pool->Workers() : 1;
   coveredPerWorker_.assign(static_cast<size_t>(threads), 0);
   if (laneCount_ < static_cast<size_t>(threads) * kLanes) {
     laneCount_ = static_cast<size_t>(threads) * kLanes;
@@ -385,8 +385,7 @@ int RayCastStage::Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame
   if (threads == 1) {
     castTiles(0);
   } else {
-    if (!pool_ || pool_->Workers() != threads) pool_ = std::make_unique<WorkerPool>(threads);
-    pool_->Run(castTiles);
+    pool->Run(castTiles);
   }
   int covered = 0;
   for (const int c : coveredPerWorker_) covered += c;

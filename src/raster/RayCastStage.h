@@ -77,12 +77,12 @@ class RayCastStage {
                         const RenderOptions& options,
                         double fromTrianglesPerSample = kTriedFromTrianglesPerSample);
 
-  /// Draws; returns how many (sample, triangle) pairs were found covering.
-  int Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame& frame, int threads,
+  /// Draws, on the pool's workers when given; returns how many (sample,
+  /// triangle) pairs were found covering.
+  int Draw(const Scene& scene, const RayBvh& bvh, const ClusterFrame& frame, WorkerPool* pool,
            DepthBuffer& depth, CellBuffer& cells);
 
  private:
-  std::unique_ptr<WorkerPool> pool_;
   std::atomic<int> nextTile_{0};
   std::vector<int> coveredPerWorker_;
   std::unique_ptr<Lane[]> lanes_;  ///< kLanes a worker

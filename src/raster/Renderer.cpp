@@ -33,18 +33,6 @@ bool DrawsByCluster(const Scene& scene, const RenderOptions& options) {
          ClusterStage::Usable(scene);
 }
 
-// Adds a face not seen before to `seen`, marking its level 0 (EndSeenFaces
-// restores -1); runs of one face look it up once.
-inline void MarkSeen(uint32_t faceNumber, uint32_t& previous, std::vector<int16_t>& levels,
-                     std::vector<uint32_t>& seen) {
-  if (faceNumber == previous) return;
-  previous = faceNumber;
-  if (faceNumber != 0 && levels[faceNumber - 1] == -1) {
-    levels[faceNumber - 1] = 0;
-    seen.push_back(faceNumber - 1);
-  }
-}
-
 RenderOptions ResolvedOptions(const Scene& scene, const RenderOptions& options) {
   RenderOptions resolved = options;
   resolved.method = ResolvedMethod(scene, options.method);
@@ -104,13 +92,15 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   resolved.method = ResolvedMethod(scene, options.method);
   cells.Clear();
   if (NeedsDepth(resolved)) depth.Clear();
+  framePool_ = nullptr;
   clipPlanes_ = MakeViewClipPlanes(camera.projection, NearDistance(scene));
   eyeWorld_ = EyePositionWorld(camera.view);
   RenderStats stats;
   if (DrawsByCluster(scene, resolved)) {
     stats.trianglesDrawn = DrawClusters(scene, camera, resolved, depth, cells);
     stats.byHierarchy = drewByHierarchy_;
-    stats.facesVisible = ShadeCells(scene, resolved, cells);
+    stats.facesVisible =
+        shadeStage_.ShadeCells(scene, {eyeFromWorld_, eyeWorld_}, resolved, framePool_, cells);
     return stats;
   }
   TransformVertices(scene, camera, resolved.variant, resolved.method == Method::kPainter);
@@ -119,7 +109,8 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   } else {
     stats.trianglesDrawn = DrawSurfaces(scene, camera, resolved, depth, cells);
   }
-  stats.facesVisible = ShadeCells(scene, resolved, cells);
+  stats.facesVisible =
+      shadeStage_.ShadeCells(scene, {eyeFromWorld_, eyeWorld_}, resolved, nullptr, cells);
   return stats;
 }
 
@@ -158,8 +149,8 @@ RenderStats Renderer::RenderSampled(const Scene& scene, const Camera& camera,
     fineCellsCurrent_ = true;
   }
   glyphStage_.Compose(
-      {sampleFrame_, faceIntensities_, PatternSampleGrid(options), options.keepDepth}, options,
-      cells, depth);
+      {sampleFrame_, shadeStage_.FaceIntensities(), PatternSampleGrid(options), options.keepDepth},
+      options, cells, depth);
   return stats;
 }
 
@@ -173,39 +164,15 @@ RenderStats Renderer::DrawSampleFrame(const Scene& scene, const Camera& fine,
   SampleSink sink(rasterizer);
   RenderStats stats;
   stats.trianglesDrawn = DrawClusters(scene, fine, single, fineDepth_, fineCells_, &sink);
-  BeginSeenFaces(scene);
-  ListSampledFaces(scene.FaceCount());
-  ShadeSeenFaces(scene, single, false);  // the glyph stage takes levels from intensities
-  stats.facesVisible = EndSeenFaces();
+  stats.facesVisible =
+      shadeStage_.ShadeSamples(scene, {eyeFromWorld_, eyeWorld_}, single, sampleFrame_);
   return stats;
 }
 
-// The faces the samples show, without a branch a sample (where faces are
-// first seen is unpredictable): background looks up a slot past the faces
-// that reads as seen; every sample's face is written to the list, which
-// grows only by the new ones.
-void Renderer::ListSampledFaces(size_t faceCount) {
-  faceLevels_.resize(faceCount + 1);
-  faceLevels_[faceCount] = 0;
-  int16_t* const levels = faceLevels_.data();
-  const size_t perCell = static_cast<size_t>(sampleFrame_.Grid().Count());
-  size_t seen = 0;
-  const size_t cellCount = sampleFrame_.CellCount();
-  for (size_t cell = sampleFrame_.NextTouched(0); cell < cellCount;
-       cell = sampleFrame_.NextTouched(cell + 1)) {
-    if (seenFaces_.size() < seen + perCell)
-      seenFaces_.resize(seen + perCell);  // grows as push_back
-    uint32_t* const list = seenFaces_.data();
-    for (uint32_t faceNumber : sampleFrame_.Faces(cell)) {
-      const uint32_t face = faceNumber == 0 ? static_cast<uint32_t>(faceCount) : faceNumber - 1;
-      const bool isNew = levels[face] == -1;
-      levels[face] = 0;
-      list[seen] = face;
-      seen += isNew ? 1 : 0;
-    }
-  }
-  seenFaces_.resize(seen);
-  faceLevels_[faceCount] = -1;  // every level -1 between frames, as BeginSeenFaces expects
+WorkerPool* Renderer::PoolFor(int threads) {
+  if (threads <= 1) return nullptr;
+  if (!pool_ || pool_->Workers() != threads) pool_ = std::make_unique<WorkerPool>(threads);
+  return pool_.get();
 }
 
 const CellBuffer& Renderer::Samples() const {
@@ -345,6 +312,8 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
   frame.sink = sink;
   // The scanline variant steps rows in float from its first row: one band only.
   const int threads = options.variant.scanline ? 1 : ResolvedThreadCount(options.threads);
+  // The frame's pool: the surface pass's threads, then shading's (big scenes only).
+  framePool_ = scene.triangles.size() >= options.threadsFromTriangles ? PoolFor(threads) : nullptr;
   const HierarchyUse use = options.variant.hierarchy;
   const int width = cells.WidthCells(), height = cells.HeightCells();
   const bool wanted =
@@ -352,9 +321,9 @@ int Renderer::DrawClusters(const Scene& scene, const Camera& camera, const Rende
       (use == HierarchyUse::kWhenFaster && RayCastStage::WorthTrying(scene, width, height));
   const std::shared_ptr<const RayBvh> bvh = wanted ? scene.hierarchy.Get(scene) : nullptr;
   drewByHierarchy_ = bvh != nullptr && RayCastStage::Applies(scene, *bvh, frame);
-  if (!drewByHierarchy_) return clusterStage_.Draw(scene, frame, threads, depth, cells);
+  if (!drewByHierarchy_) return clusterStage_.Draw(scene, frame, framePool_, depth, cells);
   if (use == HierarchyUse::kAlways) {
-    return rayCastStage_.Draw(scene, *bvh, frame, threads, depth, cells);
+    return rayCastStage_.Draw(scene, *bvh, frame, PoolFor(threads), depth, cells);
   }
   return DrawByQuickerPass(scene, bvh, frame, threads, depth, cells);
 }
@@ -376,8 +345,9 @@ int Renderer::DrawByQuickerPass(const Scene& scene, const std::shared_ptr<const 
       RayCastStage::Faster(scene, width, height) ? SurfacePass::kHierarchy : SurfacePass::kClusters;
   drewByHierarchy_ = passChoice_.Pick(key, prior) == SurfacePass::kHierarchy;
   const auto start = std::chrono::steady_clock::now();
-  const int drawn = drewByHierarchy_ ? rayCastStage_.Draw(scene, *bvh, frame, threads, depth, cells)
-                                     : clusterStage_.Draw(scene, frame, threads, depth, cells);
+  const int drawn = drewByHierarchy_
+                        ? rayCastStage_.Draw(scene, *bvh, frame, PoolFor(threads), depth, cells)
+                        : clusterStage_.Draw(scene, frame, framePool_, depth, cells);
   passChoice_.Record(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   return drawn;
@@ -397,80 +367,6 @@ int Renderer::DrawEdges(const Scene& scene, const Camera& camera, const RenderOp
     ++drawn;
   }
   return drawn;
-}
-
-void Renderer::BeginSeenFaces(const Scene& scene) {
-  faceLevels_.resize(scene.FaceCount(), -1);
-  faceIntensities_.resize(scene.FaceCount(), 0);
-  seenFaces_.clear();
-}
-
-// Adds the faces of these samples or cells not seen before to seenFaces_.
-void Renderer::MarkSeenFaces(std::span<const uint32_t> faceNumbers) {
-  uint32_t previous = 0;
-  for (uint32_t faceNumber : faceNumbers) MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
-}
-
-// The intensity (and, with `levels`, the ramp level) of every seen face.
-void Renderer::ShadeSeenFaces(const Scene& scene, const RenderOptions& options, bool levels) {
-  // Step 1: n.s per seen face, with n turned towards the eye, in world space.
-  const Mat4& m = eyeFromWorld_;
-  const Vec3 s = options.sunEye;
-  const Vec3 sunWorld{m.At(0, 0) * s.x + m.At(1, 0) * s.y + m.At(2, 0) * s.z,
-                      m.At(0, 1) * s.x + m.At(1, 1) * s.y + m.At(2, 1) * s.z,
-                      m.At(0, 2) * s.x + m.At(1, 2) * s.y + m.At(2, 2) * s.z};
-  double minDot = INFINITY, maxDot = -INFINITY;
-  seenSunDots_.clear();
-  for (uint32_t f : seenFaces_) {
-    const double dot =
-        Dot(scene.facePlanesWorld[f].normal, sunWorld) * (FaceIsFront(scene, f) ? 1.0 : -1.0);
-    seenSunDots_.push_back(dot);
-    minDot = std::min(minDot, dot);
-    maxDot = std::max(maxDot, dot);
-  }
-  // Step 2: levels and intensities per face.
-  for (size_t i = 0; i < seenFaces_.size(); ++i) {
-    const double intensity =
-        options.shade == ShadeMode::kContrast
-            ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, options.ambient)
-            : LambertIntensity(seenSunDots_[i], options.ambient);
-    if (levels) faceLevels_[seenFaces_[i]] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
-    const double clamped = std::isnan(intensity) ? 0.0 : std::clamp(intensity, 0.0, 1.0);
-    faceIntensities_[seenFaces_[i]] = static_cast<uint8_t>(std::lround(255.0 * clamped));
-  }
-}
-
-// Unmarks the seen faces' levels; returns how many faces were seen.
-int Renderer::EndSeenFaces() {
-  for (uint32_t f : seenFaces_) faceLevels_[f] = -1;
-  return static_cast<int>(seenFaces_.size());
-}
-
-// Turns the face seen in each cell into a ramp glyph; returns the faces seen.
-int Renderer::ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells) {
-  const auto& faces = cells.FaceNumbers();
-  BeginSeenFaces(scene);
-  MarkSeenFaces(faces);
-  ShadeSeenFaces(scene, options);
-  if (cells.FacesOnly()) {
-    // Samples: the glyph stage reads faceIntensities_ of the faces seen.
-  } else if (options.method != Method::kWire) {
-    auto& glyphs = cells.Glyphs();
-    auto& levels = cells.Levels();
-    auto& intensities = cells.Intensities();
-    for (size_t i = 0; i < faces.size(); ++i) {
-      if (faces[i] == 0) continue;
-      levels[i] = faceLevels_[faces[i] - 1];
-      intensities[i] = faceIntensities_[faces[i] - 1];
-      glyphs[i] = options.ramp.Glyph(levels[i]);
-    }
-  } else {
-    auto& intensities = cells.Intensities();  // lines are drawn at full intensity
-    for (size_t i = 0; i < intensities.size(); ++i) {
-      if (cells.Levels()[i] >= 0) intensities[i] = 255;
-    }
-  }
-  return EndSeenFaces();
 }
 
 }  // namespace termshade

@@ -16,8 +16,10 @@
 #include "raster/RayCastStage.h"
 #include "raster/RenderOptions.h"
 #include "raster/SampleFrame.h"
+#include "raster/ShadeStage.h"
 #include "raster/SurfacePassChoice.h"
 #include "raster/TriangleRasterizer.h"
+#include "raster/WorkerPool.h"
 
 namespace termshade {
 
@@ -71,13 +73,8 @@ class Renderer {
                         CellBuffer& cells);
   int DrawEdges(const Scene& scene, const Camera& camera, const RenderOptions& options,
                 DepthBuffer& depth, CellBuffer& cells);
-  int ShadeCells(const Scene& scene, const RenderOptions& options, CellBuffer& cells);
-  void BeginSeenFaces(const Scene& scene);
-  void MarkSeenFaces(std::span<const uint32_t> faceNumbers);
-  /// Lists the faces sampleFrame_ shows in seenFaces_ (between BeginSeenFaces and ShadeSeenFaces).
-  void ListSampledFaces(size_t faceCount);
-  void ShadeSeenFaces(const Scene& scene, const RenderOptions& options, bool levels = true);
-  int EndSeenFaces();
+  /// The pool for `threads` threads (kept between frames); none for one.
+  WorkerPool* PoolFor(int threads);
 
   ViewClipPlanes clipPlanes_{};
   Mat4 eyeFromWorld_;
@@ -92,6 +89,9 @@ class Renderer {
   DepthBuffer fineDepth_;
   SampleFrame sampleFrame_;  ///< the same samples cell by cell: what the glyph stage reads
   GlyphStage glyphStage_;
+  ShadeStage shadeStage_;
+  std::unique_ptr<WorkerPool> pool_;
+  WorkerPool* framePool_ = nullptr;  ///< this frame's threads for the surface pass and shading
   ClusterStage clusterStage_;
   RayCastStage rayCastStage_;
   bool drewByHierarchy_ = false;  ///< the last DrawClusters cast rays through the hierarchy
@@ -102,10 +102,6 @@ class Renderer {
   std::vector<double> zEye_;  ///< eye z per vertex, for the painter's sort
   std::vector<RasterVertex> rasterVertices_;
   std::vector<uint8_t> outCodes_;
-  std::vector<int16_t> faceLevels_;       ///< per face: ramp level; -1 between frames
-  std::vector<uint8_t> faceIntensities_;  ///< per face: intensity 0..255 this frame
-  std::vector<uint32_t> seenFaces_;       ///< faces seen in some cell this frame
-  std::vector<double> seenSunDots_;       ///< their n.s, n turned towards the eye
   std::vector<std::pair<double, uint32_t>> painterOrder_;
 };
 
