@@ -1,10 +1,13 @@
 // Micro-benchmarks of the frame loop (Google Benchmark): one thread, 160x48 cells.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+
 #include "geometry/FitCamera.h"
 #include "geometry/ViewingTransform.h"
 #include "io/SceneGenerators.h"
 #include "raster/Renderer.h"
+#include "raster/WorkerPool.h"
 
 namespace termshade {
 namespace {
@@ -69,6 +72,28 @@ void BM_PlainLoop200k(benchmark::State& state) {  // NOLINT(readability-identifi
   }
 }
 BENCHMARK(BM_PlainLoop200k)->Unit(benchmark::kMicrosecond);
+
+// A pool's hand-over: Run of a job that keeps each of two workers busy for
+// 200 us, back to back, so the time above 200 us is the pool's own; with two
+// pools taking turns (two renderers), each pool's workers idle while the
+// other's run.
+void BusyFor(std::chrono::microseconds span) {
+  const auto end = std::chrono::steady_clock::now() + span;
+  while (std::chrono::steady_clock::now() < end) {
+  }
+}
+
+void BM_PoolHandOver(benchmark::State& state) {  // NOLINT(readability-identifier-naming)
+  WorkerPool first(2), second(2);
+  const bool twoPools = state.range(0) != 0;
+  auto job = [](int) { BusyFor(std::chrono::microseconds(200)); };
+  bool turn = false;
+  for (auto _ : state) {
+    (twoPools && turn ? second : first).Run(job);
+    turn = !turn;
+  }
+}
+BENCHMARK(BM_PoolHandOver)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 }  // namespace
 }  // namespace termshade

@@ -21,7 +21,9 @@ void Pause() {
 #endif
 }
 
-// Spins until done() or kSpinTime has passed; true if done().
+// Spins until done() or kSpinTime has passed; true if done(). Between
+// short bursts it yields, so another thread ready on this core (another
+// pool's worker, another program) runs instead of waiting for the spin.
 template <typename Done>
 bool SpinUntil(Done done) {
   const auto deadline = std::chrono::steady_clock::now() + kSpinTime;
@@ -31,6 +33,7 @@ bool SpinUntil(Done done) {
       Pause();
     }
     if (std::chrono::steady_clock::now() > deadline) return done();
+    std::this_thread::yield();
   }
 }
 
