@@ -184,7 +184,7 @@ void DrawCellsVector(const RasterVertex& v0, const RasterVertex& v1, const Raste
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #define TERMSHADE_WIDE_CELLS 1
-// DrawCellsVector for 8 samples a cell with AVX2: a cell's samples in one
+// DrawCellsVector for 8 (or 6) samples a cell with AVX2: a cell's samples in one
 // register of eight lanes (the same integers, conversions and float
 // operations lane by lane; no FMA, so products and sums round as before).
 typedef int32_t Int8 __attribute__((vector_size(32)));
@@ -206,16 +206,21 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
                                                    uint32_t faceNumber, SampleFrame& frame,
                                                    int cellCol0, int cellCol1, int cellRow0,
                                                    int cellRow1) {
-  static_assert(K * M == 8);
+  constexpr int kCount = K * M;  // 8, or 6 with two padding lanes
+  static_assert(kCount == 8 || kCount == 6);
   const int64_t originX = int64_t{cellCol0} * K * kFixedOne + kFixedHalf;
   const int64_t originY = int64_t{cellRow0} * M * kFixedOne + kFixedHalf;
   const Setup t = MakeSetup(v0, v1, v2, area, originX, originY);
   const Edge &e12 = t.e12, &e20 = t.e20, &e01 = t.e01;
   // Each lane's offset from the cell's first sample: i stepX + j stepY (32 bits, wrapping).
-  Int8 columns, rows;
+  // Padding lanes repeat the first samples (their values stay in range) and
+  // are never covered; they overlap the next cell's first samples, which
+  // they write back unchanged.
+  Int8 columns, rows, valid;
   for (int l = 0; l < 8; ++l) {
-    columns[l] = l % K;
-    rows[l] = l / K;
+    columns[l] = (l % kCount) % K;
+    rows[l] = (l % kCount) / K;
+    valid[l] = l < kCount ? -1 : 0;
   }
   const UInt8 i = reinterpret_cast<UInt8>(columns), j = reinterpret_cast<UInt8>(rows);
   // The lanes' edge values at the box's first cell, and their steps a cell across and down
@@ -240,7 +245,7 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
     for (int col = cellCol0; col <= cellCol1;
          ++col, ++cell, w12 += across12, w20 += across20, w01 += across01) {
       // Step 1: the covered samples (sign bits clear in all three).
-      const Int8 covered = (w12 | w20 | w01) > -1;
+      const Int8 covered = valid & ((w12 | w20 | w01) > -1);
       // Step 2: by the rule, without branches (which the cells' coverage makes
       // unpredictable; measured after another mode's frame, 9% quicker, 5%
       // slower when the same frames repeat): a cell no sample reaches is
@@ -248,10 +253,10 @@ __attribute__((target("avx2"))) void DrawCellsWide(const RasterVertex& v0, const
       const bool any = __builtin_ia32_ptestz256(reinterpret_cast<Long4>(covered),
                                                 reinterpret_cast<Long4>(covered)) == 0;
       const uint8_t wasTouched = touched[cell];
-      const Int8 kept = Int8{} - static_cast<int32_t>(wasTouched);  // flags are 0 or 1
+      const Int8 kept = (Int8{} - static_cast<int32_t>(wasTouched)) | ~valid;  // flags: 0 or 1
       touched[cell] = wasTouched | static_cast<uint8_t>(any);
-      uint32_t* const cellFaces = faces + cell * 8;
-      float* const cellDepth = depth + cell * 8;
+      uint32_t* const cellFaces = faces + cell * kCount;
+      float* const cellDepth = depth + cell * kCount;
       Int8 storedFaces;
       std::memcpy(&storedFaces, cellFaces, sizeof storedFaces);
       storedFaces &= kept;
@@ -349,7 +354,7 @@ void DrawTriangle(const RasterVertex& a, const RasterVertex& b, const RasterVert
     DrawSamples<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0, col1, row0, row1);
   } else {
 #if defined(TERMSHADE_WIDE_CELLS)
-    if constexpr (kWide && K * M == 8) {
+    if constexpr (kWide && (K * M == 8 || K * M == 6)) {
       DrawCellsWide<K, M, kRule>(*v0, *v1, *v2, area, faceNumber, frame, col0 / K, col1 / K,
                                  row0 / M, row1 / M);
       return;
@@ -399,7 +404,7 @@ SampledRasterizer::SampledRasterizer(SampleFrame& frame, DepthRule rule, bool wi
   const SampleGrid g = frame.Grid();
   if (g == SampleGrid{1, 2}) draw_ = ForRule<1, 2, false>(rule);
   if (g == SampleGrid{2, 2}) draw_ = ForRule<2, 2, false>(rule);
-  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3, false>(rule);
+  if (g == SampleGrid{2, 3}) draw_ = ForRule<2, 3>(rule, wide);
   if (g == SampleGrid{2, 4}) draw_ = ForRule<2, 4>(rule, wide);
 }
 

@@ -8,8 +8,10 @@
 namespace termshade {
 namespace {
 
-// How far ahead per-face reads are requested (big scenes' faces miss the caches).
+// How far ahead per-face reads are requested, from how many faces (smaller
+// scenes' per-face arrays stay in the caches, and the requests cost time).
 constexpr size_t kAhead = 16;
+constexpr size_t kPrefetchFromFaces = size_t{1} << 17;
 
 // From this many faces seen, a pool's workers share the shading (fewer: a
 // pool's hand-over, about a microsecond while its workers spin, would cost more
@@ -85,6 +87,12 @@ void ShadeStage::BeginSeenFaces(size_t faceCount) {
 // faces are cache misses at random: requested kAhead cells early).
 void ShadeStage::MarkSeenFaces(std::span<const uint32_t> faceNumbers) {
   uint32_t previous = 0;
+  if (faceLevels_.size() < kPrefetchFromFaces) {
+    for (const uint32_t faceNumber : faceNumbers) {
+      MarkSeen(faceNumber, previous, faceLevels_, seenFaces_);
+    }
+    return;
+  }
   const size_t count = faceNumbers.size();
   for (size_t i = 0; i < count; ++i) {
     if (i + kAhead < count) {
