@@ -135,6 +135,9 @@ TerminalSession::TerminalSession() {
                 BUTTON5_PRESSED,
             nullptr);
   mouseinterval(0);
+  // ncurses asks for the reports (and turns them off at endwin); the viewer
+  // decodes them (InputDecoder): ncurses' decoding keeps only the last of a burst.
+  keyok(KEY_MOUSE, FALSE);
   if (has_colors()) start_color();
   // The way back for a fatal signal, made now: no allocation in the handler.
   const std::string reset = TerminalWriter::ResetSequence();
@@ -147,6 +150,14 @@ TerminalSession::TerminalSession() {
 
 int TerminalSession::NextKey() {
   return wgetch(static_cast<WINDOW*>(inputPad_));
+}
+
+int TerminalSession::NextKeyWithin(int milliseconds) {
+  auto* const pad = static_cast<WINDOW*>(inputPad_);
+  wtimeout(pad, milliseconds);
+  const int key = wgetch(pad);
+  wtimeout(pad, 0);
+  return key;
 }
 int TerminalSession::WidthCells() {
   return COLS;
@@ -253,8 +264,10 @@ void TerminalSession::Suspend() {
   std::signal(SIGTSTP, SIG_DFL);
   raise(SIGTSTP);
   InstallSignalHandlers();
-  // Step 3: the viewer's modes again (doupdate restores them, with mouse and keypad).
+  // Step 3: the viewer's modes again (doupdate restores them, with mouse and keypad;
+  // its mouse resume turns ncurses' decoding back on).
   doupdate();
+  keyok(KEY_MOUSE, FALSE);
   gFatalRestore.armed.store(true);
 }
 

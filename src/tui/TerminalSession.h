@@ -34,6 +34,8 @@ class TerminalSession {
   /// The next key (ncurses key codes, KEY_RESIZE and KEY_MOUSE included), or
   /// ERR when none is waiting. Read through a pad, so ncurses never draws.
   int NextKey();
+  /// NextKey, waiting up to `milliseconds` for one.
+  int NextKeyWithin(int milliseconds);
   static int WidthCells();
   static int HeightCells();
   /// The read end of the signal pipe: readable once a handled signal arrived.

@@ -18,6 +18,7 @@
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
+#include "tui/InputDecoder.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
 #include "tui/PathCompletion.h"
@@ -40,6 +41,8 @@ constexpr int kMinCols = 20;
 constexpr int kMinRows = 4;
 constexpr auto kTurntablePeriod = std::chrono::milliseconds(40);  // at most 25 frames a second
 constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is looked at
+// How long the rest of a mouse report that has begun may take to arrive.
+constexpr int kReportRestMs = 50;
 
 /// How the event loop ended.
 struct LoopOutcome {
@@ -94,7 +97,11 @@ RayBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
 class EventLoop {
  public:
   EventLoop(ViewerState& state, TerminalSession& session)
-      : state_(state), session_(session), writer_(STDOUT_FILENO) {}
+      : state_(state),
+        session_(session),
+        writer_(STDOUT_FILENO),
+        input_([&session] { return session.NextKey(); },
+               [&session] { return session.NextKeyWithin(kReportRestMs); }) {}
 
   LoopOutcome Run() {
     LoopOutcome outcome;
@@ -126,7 +133,7 @@ class EventLoop {
       }
       if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
       // Step 2: every key that queued up while drawing, applied before one redraw.
-      for (int key = session_.NextKey(); key != ERR; key = session_.NextKey()) HandleKey(key);
+      for (auto event = input_.Next(); event; event = input_.Next()) HandleInput(*event);
       // Step 3: a finished load, or news of one still running.
       if (job_ && job_->Finished()) FinishLoad();
       if (job_ && LoadingText() != shownLoadingText_) dirty_ = true;
@@ -277,6 +284,20 @@ class EventLoop {
     return signals.terminate;
   }
 
+  void HandleInput(const InputEvent& event) {
+    if (!event.mouse) {
+      HandleKey(event.key);
+      return;
+    }
+    if (prompting_) return;    // never typed into the prompt
+    if (state_.HelpShown()) {  // any key or button closes the help
+      state_.Apply(ViewerAction::kToggleHelp);
+      dirty_ = true;
+      return;
+    }
+    HandleMouse(*event.mouse);
+  }
+
   void HandleKey(int key) {
     if (prompting_) {
       HandlePromptKey(key);
@@ -289,10 +310,6 @@ class EventLoop {
     if (state_.HelpShown()) {  // any key closes the help
       state_.Apply(ViewerAction::kToggleHelp);
       dirty_ = true;
-      return;
-    }
-    if (key == KEY_MOUSE) {
-      HandleMouse();
       return;
     }
     ViewerAction action = ViewerAction::kNone;
@@ -386,20 +403,21 @@ class EventLoop {
     dirty_ = true;
   }
 
-  void HandleMouse() {
-    MEVENT event{};
-    if (getmouse(&event) != OK) return;
-    if ((event.bstate & BUTTON4_PRESSED) != 0) state_.Apply(ViewerAction::kCloser);
-    if ((event.bstate & BUTTON5_PRESSED) != 0) state_.Apply(ViewerAction::kFarther);
-    if ((event.bstate & BUTTON1_PRESSED) != 0) {
+  // Wheel: distance; the left button dragged: orbit, by the cells moved
+  // since the last report (motion reports come while it is held).
+  void HandleMouse(const MouseReport& report) {
+    using Kind = MouseReport::Kind;
+    if (report.kind == Kind::kWheelUp) state_.Apply(ViewerAction::kCloser);
+    if (report.kind == Kind::kWheelDown) state_.Apply(ViewerAction::kFarther);
+    if (report.kind == Kind::kPress && report.button == 0) {
       dragging_ = true;
-      dragCol_ = event.x;
-      dragRow_ = event.y;
-    } else if (dragging_ && (event.bstate & (REPORT_MOUSE_POSITION | BUTTON1_RELEASED)) != 0) {
-      state_.Drag(event.x - dragCol_, event.y - dragRow_);
-      dragCol_ = event.x;
-      dragRow_ = event.y;
-      if ((event.bstate & BUTTON1_RELEASED) != 0) dragging_ = false;
+      dragCol_ = report.col;
+      dragRow_ = report.row;
+    } else if (dragging_ && (report.kind == Kind::kMotion || report.kind == Kind::kRelease)) {
+      state_.Drag(report.col - dragCol_, report.row - dragRow_);
+      dragCol_ = report.col;
+      dragRow_ = report.row;
+      if (report.kind == Kind::kRelease) dragging_ = false;
     }
     dirty_ = true;
   }
@@ -529,6 +547,7 @@ class EventLoop {
   bool abandonedLoad_ = false;    ///< a cancelled worker may still be running
   bool prompting_ = false;
   bool dirty_ = true;
+  InputDecoder input_;
   bool dragging_ = false;
   int dragCol_ = 0;
   int dragRow_ = 0;

@@ -619,6 +619,24 @@ wait_for 'rho 19\.7' 5 >/dev/null && pass || fail "SGR wheel down did not double
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 
+# 14b. The same drag in one burst (press, motion and release read at once, as
+# over SSH or while a frame is drawn): ncurses keeps only the last report of
+# a burst, so the viewer decodes them itself; every report counts.
+for encoding in sgr x10; do
+  if [ "$encoding" = sgr ]; then
+    run "clear; TERM=xterm-256color $bin"
+    burst=$(printf '\033[<0;41;13M\033[<32;46;13M\033[<0;51;15m')
+  else
+    run "clear; $bin"
+    burst=$(printf '\033[M\040\111\055\033[M\100\116\055\033[M\043\123\057')
+  fi
+  wait_for '\? help' 5 >/dev/null || fail "viewer did not start ($encoding burst)"
+  tm send-keys -t v -l "$burst"
+  wait_for 'theta -0\.70 phi 1\.10' 5 >/dev/null && pass || fail "$encoding mouse burst did not orbit"
+  tm send-keys -t v q
+  wait_for '^\$ ?$' 5 >/dev/null
+done
+
 # 15. A terminal that reports its pixel size sets the cell aspect: 10x18-pixel
 # cells (aspect 1.8) give the frame 'render --cell-aspect 1.8' gives.
 run "clear; python3 -c 'import fcntl, struct, termios; fcntl.ioctl(0, termios.TIOCSWINSZ, struct.pack(\"HHHH\", 25, 80, 800, 450))'; $bin"

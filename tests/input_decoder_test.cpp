@@ -1,0 +1,78 @@
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "tui/InputDecoder.h"
+
+namespace termshade {
+namespace {
+
+// Every event decoded from `bytes` (all available at once, as in a burst).
+std::vector<InputEvent> Decode(const std::string& bytes) {
+  std::deque<int> keys(bytes.begin(), bytes.end());
+  for (int& key : keys) key &= 0xFF;
+  auto next = [&keys] {
+    if (keys.empty()) return kNoInput;
+    const int key = keys.front();
+    keys.pop_front();
+    return key;
+  };
+  InputDecoder decoder(next, next);
+  std::vector<InputEvent> events;
+  for (auto event = decoder.Next(); event; event = decoder.Next()) events.push_back(*event);
+  return events;
+}
+
+using Kind = MouseReport::Kind;
+
+void ExpectReport(const InputEvent& event, Kind kind, int col, int row) {
+  ASSERT_TRUE(event.mouse.has_value());
+  EXPECT_EQ(event.mouse->kind, kind);
+  EXPECT_EQ(event.mouse->col, col);
+  EXPECT_EQ(event.mouse->row, row);
+}
+
+TEST(InputDecoder, ABurstOfSgrReportsGivesEveryReportInOrder) {
+  const auto events = Decode("\x1b[<0;41;13M\x1b[<32;46;13M\x1b[<0;51;15m");
+  ASSERT_EQ(events.size(), 3U);
+  ExpectReport(events[0], Kind::kPress, 40, 12);
+  ExpectReport(events[1], Kind::kMotion, 45, 12);
+  ExpectReport(events[2], Kind::kRelease, 50, 14);
+}
+
+TEST(InputDecoder, X10ReportsAndTheWheel) {
+  const auto events =
+      Decode(std::string("\x1b[M") + char(32) + char(33 + 40) + char(33 + 12) + "\x1b[M" +
+             char(32 + 3) + char(33 + 50) + char(33 + 14) + "\x1b[<64;3;4M\x1b[<65;3;4M");
+  ASSERT_EQ(events.size(), 4U);
+  ExpectReport(events[0], Kind::kPress, 40, 12);
+  ExpectReport(events[1], Kind::kRelease, 50, 14);
+  ExpectReport(events[2], Kind::kWheelUp, 2, 3);
+  ExpectReport(events[3], Kind::kWheelDown, 2, 3);
+}
+
+TEST(InputDecoder, KeysAroundReportsStayKeysInOrder) {
+  const auto events = Decode("a\x1b[<0;2;3Mq");
+  ASSERT_EQ(events.size(), 3U);
+  EXPECT_EQ(events[0].key, 'a');
+  ExpectReport(events[1], Kind::kPress, 1, 2);
+  EXPECT_EQ(events[2].key, 'q');
+}
+
+TEST(InputDecoder, WhatIsNotAWholeReportComesOutAsItsKeys) {
+  for (const std::string bytes :
+       {"\x1b", "\x1bx", "\x1b[", "\x1b[<", "\x1b[<0;41", "\x1b[<0;41;13X", "\x1b[<;1;1M",
+        "\x1b[<0;0;5M", "\x1b[<1234567;1;1M", "\x1b[M !", "\x1b[A"}) {
+    const auto events = Decode(bytes);
+    ASSERT_EQ(events.size(), bytes.size()) << "bytes of " << bytes.substr(1);
+    for (size_t i = 0; i < bytes.size(); ++i) {
+      EXPECT_FALSE(events[i].mouse.has_value()) << bytes.substr(1);
+      EXPECT_EQ(events[i].key, static_cast<unsigned char>(bytes[i])) << bytes.substr(1);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace termshade
