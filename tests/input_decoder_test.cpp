@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,40 @@ TEST(InputDecoder, WhatIsNotAWholeReportComesOutAsItsKeys) {
     for (size_t i = 0; i < bytes.size(); ++i) {
       EXPECT_FALSE(events[i].mouse.has_value()) << bytes.substr(1);
       EXPECT_EQ(events[i].key, static_cast<unsigned char>(bytes[i])) << bytes.substr(1);
+    }
+  }
+}
+
+// Random bursts of report fragments and stray bytes (as a hostile or broken
+// terminal might send): decoding ends, every byte is one key or part of one
+// report, and reports' cells are in range.
+TEST(InputDecoder, RandomBurstsDecodeEveryByteOnce) {
+  const std::vector<std::string> pieces{"\x1b",      "[",     "<",      "M",
+                                        "m",         ";",     "0",      "32",
+                                        "64",        "99999", "123456", "\x1b[<0;41;13M",
+                                        "\x1b[M !!", "q",     "\xff",   std::string(1, '\0')};
+  std::mt19937 random(20261203);
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::string bytes;
+    const int count = static_cast<int>(random() % 12);
+    for (int i = 0; i < count; ++i) bytes += pieces[random() % pieces.size()];
+    const auto events = Decode(bytes);
+    size_t keys = 0, reports = 0;
+    for (const InputEvent& event : events) {
+      if (event.mouse) {
+        ++reports;
+        EXPECT_GE(event.mouse->col, 0) << trial;
+        EXPECT_GE(event.mouse->row, 0) << trial;
+        EXPECT_LT(event.mouse->col, 100000) << trial;
+        EXPECT_LT(event.mouse->row, 100000) << trial;
+      } else {
+        ++keys;
+      }
+    }
+    // A report takes at least 6 bytes (ESC [ M and three), so keys + 6 reports <= bytes.
+    EXPECT_LE(keys + 6 * reports, bytes.size()) << trial;
+    if (reports == 0) {
+      EXPECT_EQ(keys, bytes.size()) << trial;
     }
   }
 }
