@@ -167,10 +167,12 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
   result.exactTriangles = exact.triangles.size();
   if (exact.triangles.size() < options.minSourceTriangles) return result;
   auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(); };
-  const Source source = MakeSource(exact);
+  Source source = MakeSource(exact);
   const size_t vertexCount = exact.verticesWorld.size();
   std::vector<uint32_t> newIndex(vertexCount, kNone);
-  std::vector<uint32_t> current = source.indices, simplified(current.size());
+  // The joined indices are only the first level's input: moved, not copied
+  // (a 10M-triangle scan's build peaks 114 MB lower).
+  std::vector<uint32_t> current = std::move(source.indices), simplified(current.size());
   double relativeError = 0.0;  // accumulated over the levels: each is simplified from the last
   while (!cancelled()) {
     const size_t triangles = current.size() / 3;

@@ -27,6 +27,9 @@ class SceneJob {
     worker_ =
         StartWorkerThread([shared = shared_, scene = scene_, build = std::move(build)]() mutable {
           shared->result = std::make_shared<const Result>(build(*scene, shared->cancel));
+          // The build's own arrays go back to the kernel here, off the event loop (a
+          // 10M-triangle scan's levels leave 1.1 GB free in the heap; the trim takes 70 ms).
+          ReturnFreedMemory();
           shared->finished.store(true);
           shared->ready.Notify();
           // Abandoned (see ~SceneJob): nobody takes the result; the scene may be the last
