@@ -1,6 +1,7 @@
 #include "FrameBench.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -33,10 +34,24 @@ struct BenchScene {
   Scene scene;
 };
 
-// Medians per case over a turntable; the cases take turns on each view, in
-// an order shuffled every view (fixed seed), so no case always runs after
-// the same other one (whose caches and branch history it would inherit).
-std::vector<double> MedianMs(const Scene& scene, int width, int height,
+double FrameMs(const Scene& scene, const Camera& camera, const FrameCase& frameCase,
+               Renderer& renderer, DepthBuffer& depth, CellBuffer& cells) {
+  RenderOptions options;
+  options.method = Method::kAuto;
+  options.keepDepth = false;  // as the viewer draws
+  options.threads = frameCase.threads;
+  options.variant.clusters = frameCase.clusters;
+  options.variant.clusterCulling = frameCase.culling;
+  options.variant.hierarchy = frameCase.hierarchy;
+  const Clock::time_point start = Clock::now();
+  renderer.Render(scene, camera, options, depth, cells);
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Per case, its time on each view of a turntable; the cases take turns on
+// each view, in an order shuffled every view (fixed seed), so no case always
+// runs after the same other one (whose caches and branch history it would inherit).
+std::vector<std::vector<double>> ViewMs(const Scene& scene, int width, int height,
                              const std::vector<FrameCase>& cases, int frames) {
   std::vector<Renderer> renderers(cases.size());
   std::vector<std::vector<double>> ms(cases.size());
@@ -53,23 +68,53 @@ std::vector<double> MedianMs(const Scene& scene, int width, int height,
     const Camera camera = FitCamera(scene, view, width, height, 2.0);
     std::shuffle(order.begin(), order.end(), shuffler);
     for (const size_t k : order) {
-      RenderOptions options;
-      options.method = Method::kAuto;
-      options.keepDepth = false;  // as the viewer draws
-      options.threads = cases[k].threads;
-      options.variant.clusters = cases[k].clusters;
-      options.variant.clusterCulling = cases[k].culling;
-      options.variant.hierarchy = cases[k].hierarchy;
-      const Clock::time_point start = Clock::now();
-      renderers[k].Render(scene, camera, options, depth, cells);
-      const double elapsed =
-          std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      const double elapsed = FrameMs(scene, camera, cases[k], renderers[k], depth, cells);
       if (frame > 0) ms[k].push_back(elapsed);  // the first frame warms caches and threads
     }
   }
-  std::vector<double> medians;
-  for (const auto& m : ms) medians.push_back(Median(m));
-  return medians;
+  return ms;
+}
+
+// As the viewer orbits: runs of kRunFrames frames of one case, theta
+// advancing by the turntable's step, the two cases' runs alternating (the
+// first of each run, after the other case's, not timed). Per run pair, the
+// median of each run's frames; returns those medians per case.
+constexpr int kRunFrames = 8;
+constexpr double kTurntableStepRadians = 0.04;  // ViewerState's
+
+std::array<std::vector<double>, 2> RunMs(const Scene& scene, int width, int height,
+                                         const std::array<FrameCase, 2>& cases, int runPairs) {
+  std::array<Renderer, 2> renderers;
+  std::array<std::vector<double>, 2> ms;
+  DepthBuffer depth;
+  CellBuffer cells;
+  depth.Resize(width, height);
+  cells.Resize(width, height);
+  ViewParams view = DefaultView(scene.diagonalModelUnits);
+  for (int pair = 0; pair < runPairs; ++pair) {
+    for (int turn = 0; turn < 2; ++turn) {
+      const size_t k = static_cast<size_t>(turn ^ (pair & 1));  // each case first in every other pair
+      ViewParams runView = view;
+      std::vector<double> run;
+      for (int frame = 0; frame <= kRunFrames; ++frame) {
+        runView.theta += kTurntableStepRadians;
+        const Camera camera = FitCamera(scene, runView, width, height, 2.0);
+        const double elapsed = FrameMs(scene, camera, cases[k], renderers[k], depth, cells);
+        if (frame > 0) run.push_back(elapsed);
+      }
+      ms[k].push_back(Median(run));
+    }
+    view.theta += kTurntableStepRadians * kRunFrames;
+  }
+  return ms;
+}
+
+// The median over views of one case's time over another's on the same view:
+// a drift of the machine's speed during the run cancels out.
+double MedianRatio(const std::vector<double>& numerator, const std::vector<double>& denominator) {
+  std::vector<double> ratios(numerator.size());
+  for (size_t i = 0; i < ratios.size(); ++i) ratios[i] = numerator[i] / denominator[i];
+  return Median(ratios);
 }
 
 }  // namespace
@@ -106,9 +151,12 @@ int RunFrameBench(const FrameBenchOptions& options) {
   };
   std::printf("| model | triangles | cells |");
   for (const FrameCase& c : cases) std::printf(" %s, ms |", c.name);
-  std::printf(" rays / clusters, all | hierarchy: build ms, MB |\n|---|---|---|");
-  for (size_t k = 0; k <= cases.size() + 1; ++k) std::printf("---|");
+  std::printf(
+      " rays / clusters, all | rays, all / 1 thread | clusters, all / 1 thread | hierarchy: build "
+      "ms, MB |\n|---|---|---|");
+  for (size_t k = 0; k <= cases.size() + 3; ++k) std::printf("---|");
   std::printf("\n");
+  std::string runRows;
   for (BenchScene& named : scenes) {
     // Every scene gets its hierarchy here, below RayCastStage::Faster too, to show the
     // crossover.
@@ -124,18 +172,41 @@ int RunFrameBench(const FrameBenchOptions& options) {
         std::cerr << "termshade bench frame: size '" << size << "' is not COLSxROWS\n";
         return 1;
       }
-      const std::vector<double> ms = MedianMs(named.scene, width, height, cases, options.frames);
+      const std::vector<std::vector<double>> viewMs =
+          ViewMs(named.scene, width, height, cases, options.frames);
+      std::vector<double> ms;
+      for (const auto& m : viewMs) ms.push_back(Median(m));
       std::printf("| %s | %zu | %s |", named.name.c_str(), named.scene.triangles.size(),
                   size.c_str());
       for (const double m : ms) std::printf(" %.3f |", m);
-      std::printf(" %.2f | %.0f, %.1f |\n", ms[1] / ms[3], buildMs, megabytes);
+      std::printf(" %.2f | %.3f | %.3f | %.0f, %.1f |\n", ms[1] / ms[3],
+                  MedianRatio(viewMs[1], viewMs[0]), MedianRatio(viewMs[3], viewMs[2]), buildMs,
+                  megabytes);
       std::fflush(stdout);
+      for (const size_t first : {size_t{0}, size_t{2}}) {  // rays, clusters: 1 thread, all
+        const auto runMs = RunMs(named.scene, width, height, {cases[first], cases[first + 1]},
+                                 std::max(3, options.frames / 4));
+        char row[256];
+        std::snprintf(row, sizeof row, "| %s | %zu | %s | %s | %.3f | %.3f | %.3f |\n",
+                      named.name.c_str(), named.scene.triangles.size(), size.c_str(),
+                      first == 0 ? "rays" : "clusters", Median(runMs[0]), Median(runMs[1]),
+                      MedianRatio(runMs[1], runMs[0]));
+        runRows += row;
+      }
     }
   }
+
   std::printf(
       "\nmedians of %d turntable frames (method auto, as the viewer draws); the cases take turns "
-      "on each frame, in an order shuffled each frame; all threads = %d\n",
+      "on each frame, in an order shuffled each frame; all / 1 thread: the median over frames "
+      "of the two cases' ratio on the same frame; all threads = %d\n",
       options.frames, all);
+  std::printf(
+      "\nThreads as the viewer orbits: runs of %d frames of one thread count (theta + %.2f a "
+      "frame), the two counts' runs alternating; medians of the runs' medians, and the median "
+      "over run pairs of all / 1 thread\n\n| model | triangles | cells | method | 1 thread, ms | "
+      "all, ms | all / 1 thread |\n|---|---|---|---|---|---|---|\n%s",
+      kRunFrames, kTurntableStepRadians, runRows.c_str());
   return 0;
 }
 

@@ -109,6 +109,9 @@ check generate_unknown_extension 2 "extension" -- "$bin" generate sphere -o "$wo
 check bench_load 0 "" -- "$bin" bench load --triangles 2000 --formats stl --repeats 1 --dir "$work/bench"
 expect bench_load_reports_a_row grep -q '^| 2k triangles, stl | auto |' "$work/out"
 expect bench_load_reports_assimp grep -q '^| 2k triangles, stl | assimp |' "$work/out"
+check bench_frame 0 "" -- "$bin" bench frame --triangles 2000 --sizes 40x12 --frames 4
+expect bench_frame_interleaved_row awk -F'|' '$2 ~ /sphere 2k/ && NF == 17 {found = 1} END {exit !found}' "$work/out"
+expect bench_frame_runs_rows test "$(grep -cE '^\| sphere 2k \| 1980 \| 40x12 \| (rays|clusters) \|' "$work/out")" -eq 2
 check obj_import 0 "" -- "$bin" render "$src/tests/models/good/quad_and_triangle.obj" --size 20x8
 
 # Several models: each model's frames in turn, one after another.
