@@ -4,19 +4,21 @@
 # the Assimp path of the model loader (model_fuzzer: OBJ, PLY, STL, OFF,
 # glTF, GLB, COLLADA, unnamed content) and our readers against their plain
 # forms (reader_fuzzer), and the import helper's answer as termshade reads it
-# (wire_fuzzer), each from a seed corpus of our files.
+# (wire_fuzzer), and the viewer's input decoder on keys and mouse reports
+# (input_fuzzer), each from a seed corpus of our files.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
 datSeconds=$((seconds / 4))
 readerSeconds=$((seconds / 4))
 wireSeconds=$((seconds / 4))
-modelSeconds=$((seconds - datSeconds - readerSeconds - wireSeconds))
+inputSeconds=$((seconds / 10))
+modelSeconds=$((seconds - datSeconds - readerSeconds - wireSeconds - inputSeconds))
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir "$work/dat" "$work/model" "$work/reader" "$work/wire"
+mkdir "$work/dat" "$work/model" "$work/reader" "$work/wire" "$work/input"
 cp data/*.dat tests/models/good/*.dat tests/models/bad/*.dat "$work/dat"/
 # Model seeds: the first byte picks the format (index into model_fuzzer's kNames).
 seed() {  # seed INDEX FILE
@@ -51,6 +53,12 @@ error = b"R" + struct.pack("<i", 0) + text(b"") + b"\x00" + text(b"seed.off") + 
 open(sys.argv[1] + "/mesh", "wb").write(progress + result)
 open(sys.argv[1] + "/error", "wb").write(error)
 PY
+# Input seeds: a burst of SGR reports, X10 reports, a report split by a gap
+# (0xFE), arrow keys as key codes (0xFD, 259 - 256) around reports.
+printf '\x1b[<0;41;13M\x1b[<32;46;13M\x1b[<0;51;15m' >"$work/input/sgr"
+printf '\x1b[M !!\x1b[M#AB' >"$work/input/x10"
+printf '\x1b[<0;4\xfe1;13Mq' >"$work/input/split"
+printf 'a\xfd\x03\x1b[<64;3;4M\xfd\x02' >"$work/input/keys"
 run() {  # run FUZZER SECONDS CORPUS
   "./build-fuzz/$1" -artifact_prefix="${ARTIFACTS:-$work/}" -max_total_time="$2" -max_len=4096 \
     -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "$3"
@@ -59,3 +67,4 @@ run dat_fuzzer "$datSeconds" "$work/dat"
 run model_fuzzer "$modelSeconds" "$work/model"
 run reader_fuzzer "$readerSeconds" "$work/reader"
 run wire_fuzzer "$wireSeconds" "$work/wire"
+run input_fuzzer "$inputSeconds" "$work/input"
