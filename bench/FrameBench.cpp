@@ -52,7 +52,7 @@ double FrameMs(const Scene& scene, const Camera& camera, const FrameCase& frameC
 // each view, in an order shuffled every view (fixed seed), so no case always
 // runs after the same other one (whose caches and branch history it would inherit).
 std::vector<std::vector<double>> ViewMs(const Scene& scene, int width, int height,
-                             const std::vector<FrameCase>& cases, int frames) {
+                                        const std::vector<FrameCase>& cases, int frames) {
   std::vector<Renderer> renderers(cases.size());
   std::vector<std::vector<double>> ms(cases.size());
   DepthBuffer depth;
@@ -93,7 +93,8 @@ std::array<std::vector<double>, 2> RunMs(const Scene& scene, int width, int heig
   ViewParams view = DefaultView(scene.diagonalModelUnits);
   for (int pair = 0; pair < runPairs; ++pair) {
     for (int turn = 0; turn < 2; ++turn) {
-      const size_t k = static_cast<size_t>(turn ^ (pair & 1));  // each case first in every other pair
+      const size_t k =
+          static_cast<size_t>(turn ^ (pair & 1));  // each case first in every other pair
       ViewParams runView = view;
       std::vector<double> run;
       for (int frame = 0; frame <= kRunFrames; ++frame) {
@@ -174,8 +175,8 @@ int RunFrameBench(const FrameBenchOptions& options) {
       }
       const std::vector<std::vector<double>> viewMs =
           ViewMs(named.scene, width, height, cases, options.frames);
-      std::vector<double> ms;
-      for (const auto& m : viewMs) ms.push_back(Median(m));
+      std::vector<double> ms(viewMs.size());
+      std::transform(viewMs.begin(), viewMs.end(), ms.begin(), Median<double>);
       std::printf("| %s | %zu | %s |", named.name.c_str(), named.scene.triangles.size(),
                   size.c_str());
       for (const double m : ms) std::printf(" %.3f |", m);
