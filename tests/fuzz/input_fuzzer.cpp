@@ -2,8 +2,9 @@
 // InputDecoder (tui/InputDecoder.h). Byte 0xFE stands for "nothing waiting
 // now" (the rest arrives later: a report split between reads); 0xFD 0xNN for
 // a key above a byte (ncurses' KEY_ codes, 256 + NN). Decoding must end,
-// give every key in order with nothing dropped or invented outside the
-// reports, and give reports only of 6 bytes or more, with cells in range.
+// read all input, give keys in the order given (none invented; none
+// dropped when no report was found), and give reports only of 6 bytes or
+// more, with cells in range.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
