@@ -9,20 +9,10 @@
 
 #include "geometry/HeapPolicy.h"
 #include "geometry/ThreadStart.h"
+#include "support/SanitizerMalloc.h"
 
 namespace termshade {
 namespace {
-
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
-#define TERMSHADE_SANITIZER_MALLOC 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(TERMSHADE_SANITIZER_MALLOC)
-constexpr bool kSanitizerMalloc = true;
-#else
-constexpr bool kSanitizerMalloc = false;
-#endif
 
 TEST(HeapPolicy, BigArraysComeFromTheHeapNotFromMmap) {
   if (kSanitizerMalloc) GTEST_SKIP() << "AddressSanitizer replaces glibc's malloc";

@@ -10,21 +10,11 @@
 #include <vector>
 
 #include "geometry/HeapPolicy.h"
+#include "support/SanitizerMalloc.h"
 #include "tui/SceneJob.h"
 
 namespace termshade {
 namespace {
-
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
-#define TERMSHADE_SANITIZER_MALLOC 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(TERMSHADE_SANITIZER_MALLOC)
-constexpr bool kSanitizerMalloc = true;
-#else
-constexpr bool kSanitizerMalloc = false;
-#endif
 
 size_t ResidentBytes() {
   FILE* statm = std::fopen("/proc/self/statm", "r");
