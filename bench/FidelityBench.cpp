@@ -14,8 +14,9 @@
 #include "SpeedErrorPlot.h"
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
-#include "io/ModelLoader.h"
-#include "io/SceneGenerators.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/LoadError.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/FrameFidelity.h"
 #include "raster/Renderer.h"
 
@@ -171,6 +172,11 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
   const int cols = options.widthCells, rows = options.heightCells;
   std::ofstream csv;
   if (!options.timingOnly) csv.open(options.csvPath);
+  if (!options.timingOnly && !csv) {
+    std::cerr << "termshade bench: cannot write " << SanitizeForTerminal(options.csvPath)
+              << " (run it from the source tree, or pass --csv and --svg)\n";
+    return 1;
+  }
   if (!options.timingOnly)
     csv << "scene,mode,median_ms,time_vs_ramp,ssim,mse,ssim_unifont,flicker\n";
   std::printf(

@@ -11,8 +11,8 @@ struct FidelityBenchOptions {
   int heightCells = 48;
   int frames = 2;               ///< turntable views per scene
   double secondsPerCase = 0.2;  ///< timing budget per mode and scene
-  std::string csvPath = "bench-fidelity.csv";
-  std::string svgPath = "bench-fidelity.svg";
+  std::string csvPath = "docs/bench-fidelity.csv";
+  std::string svgPath = "docs/bench-fidelity.svg";
   std::string dataDirectory = "data";
   std::string sceneName;    ///< only this scene (empty: every scene)
   bool timingOnly = false;  ///< frame times alone: no fidelity, flicker, CSV or SVG

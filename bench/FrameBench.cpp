@@ -11,8 +11,8 @@
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
 #include "geometry/RayBvh.h"
-#include "io/ModelLoader.h"
-#include "io/SceneGenerators.h"
+#include "io/load/ModelLoader.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/Renderer.h"
 #include "raster/WorkerPool.h"
 

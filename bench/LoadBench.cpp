@@ -16,9 +16,9 @@
 #include "FrameTiming.h"
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
-#include "io/MeshExport.h"
-#include "io/ModelLoader.h"
-#include "io/SceneGenerators.h"
+#include "io/load/ModelLoader.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/MeshExport.h"
 #include "raster/Renderer.h"
 
 namespace termshade {

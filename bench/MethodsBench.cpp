@@ -19,8 +19,9 @@
 #include "geometry/FitCamera.h"
 #include "geometry/RayCast.h"
 #include "geometry/ViewingTransform.h"
-#include "io/ModelLoader.h"
-#include "io/SceneGenerators.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/LoadError.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/DetailPick.h"
 #include "raster/FrameError.h"
 #include "raster/FrameFidelity.h"
@@ -189,7 +190,7 @@ struct CaseResult {
   double medianMs = 0.0;
   double ssim = 0.0;           ///< blurred SSIM against the exact image (SPEC 12), views 0 and 1
   double meanTriangles = 0.0;  ///< of the scene drawn
-  double faceError = 0.0;  ///< share of compared cells; < 0 when not measured
+  double faceError = 0.0;      ///< share of compared cells; < 0 when not measured
   double shadeErrorLevels = 0.0;
   int compared = 0;
 };
@@ -322,6 +323,11 @@ int RunMethodsBench(const MethodsBenchOptions& options) {
   }
   const std::vector<MethodCase> methods = Methods();
   std::ofstream csv(options.csvPath);
+  if (!csv) {
+    std::cerr << "termshade bench: cannot write " << SanitizeForTerminal(options.csvPath)
+              << " (run it from the source tree, or pass --csv and --svg)\n";
+    return 1;
+  }
   csv << "scene,method,triangles,median_ms,time_vs_default,ns_per_cell,face_error,"
          "shade_error_levels,compared_cells,ssim,triangles_drawn\n";
   std::printf("termshade bench methods: %dx%d cells, %d turntable frames per scene, %s\n",

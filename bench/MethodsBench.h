@@ -12,8 +12,8 @@ struct MethodsBenchOptions {
   int heightCells = 48;
   int frames = 8;               ///< turntable views per scene
   double secondsPerCase = 0.3;  ///< timing budget per method and scene
-  std::string csvPath = "bench-methods.csv";
-  std::string svgPath = "bench-methods.svg";
+  std::string csvPath = "docs/bench-methods.csv";
+  std::string svgPath = "docs/bench-methods.svg";
   std::string dataDirectory = "data";
 };
 

@@ -6,7 +6,7 @@
 #include <tuple>
 
 #include "FrameTiming.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
 
 namespace termshade {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "geometry/FitCamera.h"
 #include "geometry/ViewingTransform.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/Renderer.h"
 #include "raster/WorkerPool.h"
 

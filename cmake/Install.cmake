@@ -23,7 +23,7 @@ add_custom_target(termshade_docs ALL DEPENDS ${TERMSHADE_GENERATED_FILES})
 
 install(TARGETS termshade RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The Assimp import module and the import helper that runs it, where the
-# program looks for them (src/io/OwnFile.h).
+# program looks for them (src/io/import/OwnFile.h).
 install(TARGETS termshade_assimp LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/termshade)
 install(TARGETS termshade_import RUNTIME DESTINATION ${CMAKE_INSTALL_LIBDIR}/termshade)
 install(FILES ${TERMSHADE_GENERATED}/termshade.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
@@ -33,7 +33,10 @@ install(FILES ${TERMSHADE_GENERATED}/_termshade
         DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/vendor-completions)
 install(FILES ${TERMSHADE_GENERATED}/termshade.fish
         DESTINATION ${CMAKE_INSTALL_DATADIR}/fish/vendor_completions.d)
-install(FILES README.md LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES README.md CONTRIBUTING.md LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# The pages README.md links to, so its links hold in the installed copy too.
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
+        FILES_MATCHING PATTERN "*.md" PATTERN "*.svg" PATTERN "*.png" PATTERN "*.csv")
 
 # cpack -G DEB (run in the build folder) makes termshade_VERSION_ARCH.deb.
 set(CPACK_PACKAGE_NAME termshade)

@@ -8,7 +8,7 @@
 
 #include "geometry/RayCast.h"
 #include "geometry/ViewingTransform.h"
-#include "io/FrameFormats.h"
+#include "io/write/FrameFormats.h"
 #include "raster/FrameError.h"
 #include "support/TestSupport.h"
 

@@ -1,4 +1,4 @@
-#include "io/BinaryStlReader.h"
+#include "io/read/BinaryStlReader.h"
 
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <cstring>
 #include <vector>
 
-#include "io/MeshExport.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/MeshExport.h"
 
 namespace termshade {
 namespace {

@@ -6,7 +6,7 @@
 #include <regex>
 #include <set>
 
-#include "io/FrameFormats.h"
+#include "io/write/FrameFormats.h"
 #include "shade/CellColour.h"
 #include "shade/ColourMode.h"
 #include "support/TestSupport.h"

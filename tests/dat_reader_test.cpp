@@ -1,9 +1,9 @@
 // The .dat reader (SPEC 6): what it accepts, and every error with its exact message.
 #include <gtest/gtest.h>
 
-#include "io/DatReader.h"
-#include "io/DatWriter.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/DatReader.h"
+#include "io/write/DatWriter.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

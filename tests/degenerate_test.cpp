@@ -2,8 +2,8 @@
 // method (the sanitizer build runs these under ASan and UBSan).
 #include <gtest/gtest.h>
 
-#include "io/DatReader.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/DatReader.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

@@ -17,15 +17,15 @@
 #include <string_view>
 
 #include "geometry/Scene.h"
-#include "io/BinaryStlReader.h"
-#include "io/FileBytes.h"
-#include "io/FileBytesLoader.h"
-#include "io/FileMapGuard.h"
-#include "io/MeshExport.h"
-#include "io/ModelLoader.h"
-#include "io/ObjReader.h"
-#include "io/OwnReaders.h"
-#include "io/SceneGenerators.h"
+#include "io/load/FileBytesLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/BinaryStlReader.h"
+#include "io/read/FileBytes.h"
+#include "io/read/FileMapGuard.h"
+#include "io/read/ObjReader.h"
+#include "io/read/OwnReaders.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/MeshExport.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

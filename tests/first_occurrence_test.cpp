@@ -13,7 +13,7 @@
 
 #include "geometry/FirstUseOrder.h"
 #include "geometry/WeldVertices.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 
 namespace termshade {
 namespace {

@@ -6,8 +6,8 @@
 #include <set>
 
 #include "geometry/FitCamera.h"
-#include "io/FrameFormats.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/FrameFormats.h"
 #include "raster/FrameError.h"
 #include "raster/Renderer.h"
 #include "shade/BlockGlyphs.h"

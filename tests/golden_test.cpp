@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "io/DatWriter.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/DatWriter.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

@@ -9,7 +9,7 @@
 #include "geometry/FitCamera.h"
 #include "geometry/RayCast.h"
 #include "geometry/ViewingTransform.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/FrameError.h"
 #include "raster/Renderer.h"
 #include "support/TestSupport.h"

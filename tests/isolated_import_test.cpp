@@ -1,7 +1,7 @@
-// Assimp in the import helper (io/IsolatedImport.h): the same meshes as in
+// Assimp in the import helper (io/import/IsolatedImport.h): the same meshes as in
 // this process, an importer that loops stopped by its processor limit or at
 // once by a cancel, one that asks for too much memory refused, and the wire
-// between them checked (io/ImportWire.h).
+// between them checked (io/import/ImportWire.h).
 #include <signal.h>
 
 #include <gtest/gtest.h>
@@ -12,10 +12,10 @@
 #include <cstring>
 #include <thread>
 
-#include "io/ImportWire.h"
-#include "io/IsolatedImport.h"
-#include "io/ModelLoader.h"
-#include "io/WholeTransfer.h"
+#include "io/import/ImportWire.h"
+#include "io/import/IsolatedImport.h"
+#include "io/import/WholeTransfer.h"
+#include "io/load/ModelLoader.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

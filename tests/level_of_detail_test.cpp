@@ -6,7 +6,7 @@
 
 #include "geometry/FitCamera.h"
 #include "geometry/LevelOfDetail.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/DetailPick.h"
 #include "raster/Renderer.h"
 #include "support/TestSupport.h"

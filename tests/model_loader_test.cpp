@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "io/LoadBudget.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/LoadBudget.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

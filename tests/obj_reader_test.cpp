@@ -1,4 +1,4 @@
-#include "io/ObjReader.h"
+#include "io/read/ObjReader.h"
 
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <fstream>
 
 #include "geometry/DropUnusedVertices.h"
-#include "io/MeshExport.h"
-#include "io/ModelLoader.h"
-#include "io/SceneGenerators.h"
+#include "io/load/ModelLoader.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/MeshExport.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

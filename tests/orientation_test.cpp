@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry/OutwardOrientation.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "io/MeshExport.h"
-#include "io/ModelLoader.h"
-#include "io/OwnReaders.h"
-#include "io/SceneGenerators.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/OwnReaders.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/MeshExport.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -74,7 +74,8 @@ TEST(OwnReadersParity, SameFramesAsAssimpOnEveryTestModel) {
 // A bigger, generated model (the kind `bench load` measures) in all three
 // formats: both paths give the same mesh sizes and the same frames.
 TEST(OwnReadersParity, GeneratedSphereInEveryFormat) {
-  const fs::path folder = fs::temp_directory_path() / ("termshade-parity-" + std::to_string(getpid()));
+  const fs::path folder =
+      fs::temp_directory_path() / ("termshade-parity-" + std::to_string(getpid()));
   fs::create_directories(folder);
   const Mesh sphere = GenerateTriangleSphere(20'000);
   for (const char* format : {"obj", "stl", "ply"}) {

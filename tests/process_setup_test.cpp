@@ -7,8 +7,8 @@
 #include <memory>
 #include <thread>
 
-#include "geometry/HeapPolicy.h"
-#include "geometry/ThreadStart.h"
+#include "process/HeapPolicy.h"
+#include "process/ThreadStart.h"
 #include "support/SanitizerMalloc.h"
 
 namespace termshade {

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <optional>
 
-#include "io/FrameFormats.h"
+#include "io/write/FrameFormats.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "geometry/FitCamera.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/Renderer.h"
 #include "raster/SampledRasterizer.h"
 #include "support/TestSupport.h"

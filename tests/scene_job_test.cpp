@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "geometry/HeapPolicy.h"
+#include "process/HeapPolicy.h"
 #include "support/SanitizerMalloc.h"
 #include "tui/SceneJob.h"
 

@@ -9,7 +9,7 @@
 #include "geometry/FaceNormal.h"
 #include "geometry/Scene.h"
 #include "geometry/Triangulate.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 
 namespace termshade {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <map>
 
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/FrameError.h"
 #include "raster/Renderer.h"
 #include "support/TestSupport.h"

@@ -11,7 +11,7 @@
 #include "geometry/Clusters.h"
 #include "geometry/FitCamera.h"
 #include "geometry/ViewingTransform.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/Renderer.h"
 #include "support/FrameCompare.h"
 #include "support/TestSupport.h"

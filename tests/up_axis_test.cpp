@@ -9,8 +9,8 @@
 #include "geometry/Angle.h"
 #include "geometry/UpAxis.h"
 #include "geometry/ViewingTransform.h"
-#include "io/DatReader.h"
-#include "io/FrameFormats.h"
+#include "io/read/DatReader.h"
+#include "io/write/FrameFormats.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

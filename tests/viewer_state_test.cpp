@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "geometry/FitCamera.h"
-#include "io/LoadError.h"
+#include "io/read/LoadError.h"
 #include "support/TestSupport.h"
 #include "tui/LineEditor.h"
 #include "tui/PathCompletion.h"

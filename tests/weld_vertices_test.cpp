@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 
 namespace termshade {
 namespace {

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <iostream>
 
-#include "io/DatWriter.h"
-#include "io/LoadError.h"
-#include "io/MeshExport.h"
-#include "io/SceneGenerators.h"
+#include "io/read/LoadError.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/DatWriter.h"
+#include "io/write/MeshExport.h"
 
 namespace termshade {
 namespace {

@@ -8,8 +8,8 @@
 #include "cli/CommandModel.h"
 #include "cli/Completions.h"
 #include "cli/ManPage.h"
-#include "io/LoadError.h"
-#include "io/ModelExtensions.h"
+#include "io/load/ModelExtensions.h"
+#include "io/read/LoadError.h"
 #include "tui/ViewerKeys.h"
 
 namespace termshade {
@@ -120,7 +120,8 @@ const std::vector<CommandExamples>& AllExamples() {
          "per file: loads?, up axis, faces turned outward, colours, ms per frame (TSV)"},
         {"termshade bench models scan.ply --up z", "the same with the up axis given"}}},
       {"bench methods",
-       {{"termshade bench methods", "in the source folder: a table, bench-methods.csv and .svg"},
+       {{"termshade bench methods",
+         "in the source folder: a table, docs/bench-methods.csv and .svg"},
         {"termshade bench methods --frames 2 --seconds 0.05 --csv m.csv --svg m.svg",
          "a quick, rougher run"}}},
   };

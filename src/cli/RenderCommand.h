@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/UpAxis.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
 #include "raster/RenderOptions.h"
 
 namespace termshade {

@@ -21,11 +21,11 @@
 #include "cli/NumberChecks.h"
 #include "cli/RenderCommand.h"
 #include "geometry/Angle.h"
-#include "geometry/HeapPolicy.h"
 #include "geometry/UpAxis.h"
-#include "io/LoadBudget.h"
-#include "io/LoadError.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/LoadBudget.h"
+#include "io/read/LoadError.h"
+#include "process/HeapPolicy.h"
 #include "tui/Viewer.h"
 
 namespace {
@@ -344,10 +344,10 @@ int Run(int argc, char** argv) {
                    "timing budget per method and scene (default 0.3)")
       ->check(termshade::FiniteIn(0.01, 60.0));
   methodsCommand
-      ->add_option("--csv", methodsBench.csvPath, "CSV output (default bench-methods.csv)")
+      ->add_option("--csv", methodsBench.csvPath, "CSV output (default docs/bench-methods.csv)")
       ->type_name("FILE");
   methodsCommand
-      ->add_option("--svg", methodsBench.svgPath, "plot output (default bench-methods.svg)")
+      ->add_option("--svg", methodsBench.svgPath, "plot output (default docs/bench-methods.svg)")
       ->type_name("FILE");
   methodsCommand
       ->add_option("--data", methodsBench.dataDirectory, "the scenes' directory (default data)")
@@ -380,7 +380,8 @@ int Run(int argc, char** argv) {
   termshade::FrameBenchOptions frameBench;
   CLI::App* frameCommand = benchCommand->add_subcommand(
       "frame",
-      "frame time by triangles x cells: rays through the hierarchy against clusters, 1 thread against all, "
+      "frame time by triangles x cells: rays through the hierarchy against clusters, 1 thread "
+      "against all, "
       "culling on and off, and the measured choice between the two passes (the default)");
   frameCommand
       ->add_option("--models", frameBench.modelPaths,
@@ -404,10 +405,10 @@ int Run(int argc, char** argv) {
                    "timing budget per mode and scene (default 0.2)")
       ->check(termshade::FiniteIn(0.01, 60.0));
   fidelityCommand
-      ->add_option("--csv", fidelityBench.csvPath, "CSV output (default bench-fidelity.csv)")
+      ->add_option("--csv", fidelityBench.csvPath, "CSV output (default docs/bench-fidelity.csv)")
       ->type_name("FILE");
   fidelityCommand
-      ->add_option("--svg", fidelityBench.svgPath, "plot output (default bench-fidelity.svg)")
+      ->add_option("--svg", fidelityBench.svgPath, "plot output (default docs/bench-fidelity.svg)")
       ->type_name("FILE");
   fidelityCommand
       ->add_option("--data", fidelityBench.dataDirectory, "the scenes' directory (default data)")

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/LoadThreads.h"
 #include "geometry/Scene.h"
+#include "process/LoadThreads.h"
 
 namespace termshade {
 namespace {

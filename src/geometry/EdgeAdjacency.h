@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "geometry/HugePages.h"
-#include "geometry/LoadThreads.h"
+#include "process/HugePages.h"
+#include "process/LoadThreads.h"
 
 namespace termshade {
 

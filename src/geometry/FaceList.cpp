@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "geometry/HugePages.h"
+#include "process/HugePages.h"
 
 namespace termshade {
 

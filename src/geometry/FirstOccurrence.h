@@ -7,7 +7,7 @@
 #include <cstring>
 #include <memory>
 
-#include "geometry/HugePages.h"
+#include "process/HugePages.h"
 
 namespace termshade {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/HugePages.h"
+#include "process/HugePages.h"
 
 namespace termshade {
 namespace {

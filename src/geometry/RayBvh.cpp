@@ -5,9 +5,9 @@
 #include <cmath>
 #include <utility>
 
-#include "geometry/HugePages.h"
-#include "geometry/LoadThreads.h"
 #include "geometry/Scene.h"
+#include "process/HugePages.h"
+#include "process/LoadThreads.h"
 
 namespace termshade {
 namespace {

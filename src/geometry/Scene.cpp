@@ -13,10 +13,10 @@
 #include "geometry/EdgeAdjacency.h"
 #include "geometry/FaceList.h"
 #include "geometry/FaceNormal.h"
-#include "geometry/HugePages.h"
-#include "geometry/LoadThreads.h"
 #include "geometry/OutwardOrientation.h"
 #include "geometry/Triangulate.h"
+#include "process/HugePages.h"
+#include "process/LoadThreads.h"
 
 namespace termshade {
 namespace {

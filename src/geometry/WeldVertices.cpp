@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/FirstOccurrence.h"
-#include "geometry/HugePages.h"
+#include "process/HugePages.h"
 
 namespace termshade {
 

@@ -5,8 +5,8 @@
 #include <span>
 
 #include "geometry/FixedRange.h"
-#include "geometry/HugePages.h"
 #include "geometry/ViewingTransform.h"
+#include "process/HugePages.h"
 #include "raster/ClipToRaster.h"
 #include "raster/FixedPoint.h"
 #include "raster/VertexStage.h"

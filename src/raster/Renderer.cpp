@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "geometry/HugePages.h"
 #include "geometry/ViewingTransform.h"
+#include "process/HugePages.h"
 #include "raster/ClipToRaster.h"
 #include "raster/FixedPoint.h"
 #include "raster/LineRasterizer.h"

@@ -5,7 +5,7 @@
 #include <emmintrin.h>
 #endif
 
-#include "geometry/ThreadStart.h"
+#include "process/ThreadStart.h"
 
 namespace termshade {
 namespace {

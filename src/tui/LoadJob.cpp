@@ -4,8 +4,8 @@
 
 #include <chrono>
 
-#include "geometry/HeapPolicy.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "process/HeapPolicy.h"
 #include "tui/ViewerState.h"
 
 namespace termshade {

@@ -8,8 +8,8 @@
 
 #include "geometry/Scene.h"
 #include "geometry/UpAxis.h"
-#include "io/LoadError.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/LoadError.h"
 #include "tui/WorkerThread.h"
 
 namespace termshade {

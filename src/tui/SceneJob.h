@@ -6,8 +6,8 @@
 #include <thread>
 #include <utility>
 
-#include "geometry/HeapPolicy.h"
 #include "geometry/Scene.h"
+#include "process/HeapPolicy.h"
 #include "tui/WorkerThread.h"
 
 namespace termshade {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <vector>
 
-#include "io/LoadError.h"
+#include "io/read/LoadError.h"
 #include "shade/Utf8.h"
 #include "tui/ViewerKeys.h"
 

@@ -6,7 +6,7 @@
 
 #include <cerrno>
 
-#include "io/FrameFormats.h"
+#include "io/write/FrameFormats.h"
 #include "shade/Utf8.h"
 
 namespace termshade {

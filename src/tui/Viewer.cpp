@@ -11,10 +11,10 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "geometry/HeapPolicy.h"
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
-#include "io/LoadError.h"
+#include "io/read/LoadError.h"
+#include "process/HeapPolicy.h"
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"

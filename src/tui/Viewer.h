@@ -6,7 +6,7 @@
 
 #include "geometry/LevelOfDetail.h"
 #include "geometry/UpAxis.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
 #include "raster/RenderOptions.h"
 #include "shade/ColourMode.h"
 

@@ -5,9 +5,9 @@
 #include <numbers>
 
 #include "geometry/FitCamera.h"
-#include "io/DatReader.h"
-#include "io/DemoScene.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/read/DatReader.h"
+#include "io/scenes/DemoScene.h"
 
 namespace termshade {
 namespace {

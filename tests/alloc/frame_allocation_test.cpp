@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "geometry/FitCamera.h"
-#include "io/SceneGenerators.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/Renderer.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "geometry/FitCamera.h"
-#include "io/LoadError.h"
+#include "io/read/LoadError.h"
 #include "raster/Renderer.h"
 
 namespace termshade {

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "FuzzPipeline.h"
-#include "io/DatReader.h"
+#include "io/read/DatReader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace termshade;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "FuzzPipeline.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace termshade;

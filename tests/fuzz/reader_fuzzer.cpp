@@ -17,8 +17,8 @@
 #include "geometry/FirstOccurrence.h"
 #include "geometry/FirstUseOrder.h"
 #include "geometry/WeldVertices.h"
-#include "io/BinaryStlReader.h"
-#include "io/ObjReader.h"
+#include "io/read/BinaryStlReader.h"
+#include "io/read/ObjReader.h"
 
 namespace {
 

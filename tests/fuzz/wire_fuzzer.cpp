@@ -1,4 +1,4 @@
-// libFuzzer target: bytes as the import helper's answer (io/ImportWire.h),
+// libFuzzer target: bytes as the import helper's answer (io/import/ImportWire.h),
 // read the way termshade reads them from a helper that may be compromised:
 // a progress frame or a result frame, within a byte limit. A mesh the reader
 // accepts must keep the invariants MeshWireProblem names, and is drawn
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "FuzzPipeline.h"
-#include "io/ImportWire.h"
+#include "io/import/ImportWire.h"
 
 namespace {
 

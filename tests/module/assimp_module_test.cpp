@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "io/MeshExport.h"
-#include "io/ModelExtensions.h"
-#include "io/ModelLoader.h"
-#include "io/SceneGenerators.h"
+#include "io/load/ModelExtensions.h"
+#include "io/load/ModelLoader.h"
+#include "io/scenes/SceneGenerators.h"
+#include "io/write/MeshExport.h"
 #include "support/TestSupport.h"
 
 namespace termshade {

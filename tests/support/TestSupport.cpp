@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "geometry/FitCamera.h"
-#include "io/FrameFormats.h"
-#include "io/ModelLoader.h"
+#include "io/load/ModelLoader.h"
+#include "io/write/FrameFormats.h"
 #include "raster/Renderer.h"
 
 namespace termshade::test {

@@ -7,7 +7,7 @@
 
 #include "geometry/Camera.h"
 #include "geometry/Scene.h"
-#include "io/LoadError.h"
+#include "io/read/LoadError.h"
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
 #include "raster/RenderOptions.h"

@@ -1,0 +1,206 @@
+#include "io/write/FrameFormats.h"
+
+#include <charconv>
+
+#include "geometry/ViewingTransform.h"
+#include "shade/CellColour.h"
+#include "shade/Utf8.h"
+
+namespace termshade {
+namespace {
+
+template <typename Number>
+void AppendNumber(Number value, std::string& out) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+void AppendJsonString(std::string_view text, std::string& out) {
+  out += '"';
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  out += '"';
+}
+
+}  // namespace
+
+namespace {
+
+// SGR for one colour plane: 38/39 for the foreground, 48/49 for the background.
+void AppendColourSgr(const TermColour& colour, char plane, std::string& out) {
+  out += "\x1b[";
+  out += plane;
+  switch (colour.kind) {
+    case TermColour::Kind::kDefault:
+      out += "9m";
+      return;
+    case TermColour::Kind::kIndexed:
+      out += "8;5;";
+      AppendNumber(static_cast<int>(colour.index), out);
+      break;
+    case TermColour::Kind::kRgb:
+      out += "8;2;";
+      AppendNumber(static_cast<int>(colour.rgb.r), out);
+      out += ';';
+      AppendNumber(static_cast<int>(colour.rgb.g), out);
+      out += ';';
+      AppendNumber(static_cast<int>(colour.rgb.b), out);
+      break;
+  }
+  out += 'm';
+}
+
+}  // namespace
+
+void AppendForegroundSgr(const TermColour& colour, std::string& out) {
+  AppendColourSgr(colour, '3', out);
+}
+
+void AppendBackgroundSgr(const TermColour& colour, std::string& out) {
+  AppendColourSgr(colour, '4', out);
+}
+
+namespace {
+
+template <typename PerCell>
+void AppendGrid(const CellBuffer& cells, std::string_view key, PerCell perCell, std::string& out) {
+  out += ", \"";
+  out += key;
+  out += "\": [";
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    out += row == 0 ? "[" : ", [";
+    for (int col = 0; col < cells.WidthCells(); ++col) {
+      if (col > 0) out += ',';
+      perCell(cells.Index(col, row));
+    }
+    out += ']';
+  }
+  out += ']';
+}
+
+// "glyphMode", "samples": [k, m] and "sampleFaces": per cell its k x m faces, row-major.
+void AppendSampleFaces(const CellBuffer& cells, const RenderOptions& options,
+                       const JsonSamples& samples, std::string& out) {
+  const int k = samples.grid.across, m = samples.grid.down;
+  out += ", \"glyphMode\": ";
+  AppendJsonString(GlyphModeName(options.glyphs), out);
+  out += ", \"samples\": [";
+  AppendNumber(k, out);
+  out += ", ";
+  AppendNumber(m, out);
+  out += ']';
+  AppendGrid(
+      cells, "sampleFaces",
+      [&](size_t i) {
+        const int col = static_cast<int>(i % cells.WidthCells());
+        const int row = static_cast<int>(i / cells.WidthCells());
+        out += '[';
+        for (int j = 0; j < m; ++j) {
+          for (int s = 0; s < k; ++s) {
+            if (j + s > 0) out += ',';
+            AppendNumber(samples.samples.FaceNumber(col * k + s, row * m + j), out);
+          }
+        }
+        out += ']';
+      },
+      out);
+}
+
+}  // namespace
+
+std::optional<FrameFormat> ParseFrameFormat(std::string_view name) {
+  if (name == "text") return FrameFormat::kText;
+  if (name == "ansi") return FrameFormat::kAnsi;
+  if (name == "json") return FrameFormat::kJson;
+  return std::nullopt;
+}
+
+void AppendTextFrame(const CellBuffer& cells, std::string& out) {
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    out += cells.RowText(row);
+    out += '\n';
+  }
+}
+
+void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, int levelCount,
+                     ColourMode mode, std::string& out) {
+  CellColourMap colours(faceColours, levelCount, mode);
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    TermColour current, currentBack;  // the terminal's defaults until a cell sets one
+    for (int col = 0; col < cells.WidthCells(); ++col) {
+      const int level = cells.Level(col, row);
+      if (level >= 0 && mode != ColourMode::kNone) {  // a blank cell keeps the colour it has
+        const TermColour wanted = colours.ForFace(cells.FaceNumber(col, row), level);
+        if (!(wanted == current)) AppendForegroundSgr(wanted, out);
+        current = wanted;
+      }
+      // Two-colour glyph modes give a background face; others keep the terminal's.
+      const int backLevel = cells.BackLevel(col, row);
+      const TermColour wantedBack = backLevel >= 0 && mode != ColourMode::kNone
+                                        ? colours.ForFace(cells.BackFaceNumber(col, row), backLevel)
+                                        : TermColour{};
+      if (!(wantedBack == currentBack)) AppendBackgroundSgr(wantedBack, out);
+      currentBack = wantedBack;
+      AppendUtf8(out, cells.Glyph(col, row));
+    }
+    if (!(current == TermColour{}) || !(currentBack == TermColour{})) out += "\x1b[0m";
+    out += '\n';
+  }
+}
+
+void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Scene& scene,
+                     const Camera& camera, const RenderOptions& options, std::string& out,
+                     const JsonSamples* samples) {
+  const Mat4 eyeFromFile = EyeFromWorld(camera.view) * scene.worldFromFile;
+  out += "{\"format\": \"termshade-frame/1\", \"cols\": ";
+  AppendNumber(cells.WidthCells(), out);
+  out += ", \"rows\": ";
+  AppendNumber(cells.HeightCells(), out);
+  out += ", \"cellAspect\": ";
+  AppendNumber(camera.projection.cellAspect, out);
+  out += ", \"method\": ";
+  AppendJsonString(MethodName(options.method), out);
+  out += ", \"shade\": ";
+  AppendJsonString(ShadeModeName(options.shade), out);
+  out += ", \"camera\": {\"rho\": ";
+  AppendNumber(camera.view.rho, out);
+  out += ", \"theta\": ";
+  AppendNumber(camera.view.theta, out);
+  out += ", \"phi\": ";
+  AppendNumber(camera.view.phi, out);
+  out += ", \"eyeFromFile\": [";
+  for (size_t i = 0; i < eyeFromFile.m.size(); ++i) {
+    if (i > 0) out += ", ";
+    AppendNumber(eyeFromFile.m[i], out);
+  }
+  out += "], \"d\": ";
+  AppendNumber(camera.projection.d, out);
+  out += ", \"center\": [";
+  AppendNumber(camera.projection.cx, out);
+  out += ", ";
+  AppendNumber(camera.projection.cy, out);
+  out += "]}, \"glyphs\": [";
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    if (row > 0) out += ", ";
+    AppendJsonString(cells.RowText(row), out);
+  }
+  out += ']';
+  const CellBuffer& center = samples ? samples->center : cells;
+  const DepthBuffer& centerDepth = samples ? samples->centerDepth : depth;
+  AppendGrid(
+      cells, "faces", [&](size_t i) { AppendNumber(center.FaceNumbers()[i], out); }, out);
+  AppendGrid(
+      cells, "depth",
+      [&](size_t i) {
+        const float w = centerDepth.At(i);
+        AppendNumber(w > 0.0F ? 1.0F / w : 0.0F, out);
+      },
+      out);
+  if (samples) AppendSampleFaces(cells, options, *samples, out);
+  out += "}\n";
+}
+
+}  // namespace termshade
