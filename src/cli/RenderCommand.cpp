@@ -65,22 +65,24 @@ struct FrameSink {
 
 // What one frame becomes in the chosen format.
 void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& renderOptions,
-                 FrameFormat format, ColourMode colourMode, FrameSink& sink) {
+                 FrameFormat format, ColourMode colourMode, Background background,
+                 FrameSink& sink) {
   std::string& text = sink.text;
   if (format == FrameFormat::kText) AppendTextFrame(sink.cells, text);
   if (format == FrameFormat::kAnsi) {
     AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
-                    colourMode, text);
+                    colourMode, text, background);
   }
   if (format == FrameFormat::kSvg) {
-    const SvgFrameStyle style{camera.projection.cellAspect, colourMode, TerminalTheme{}};
+    const SvgFrameStyle style{camera.projection.cellAspect, colourMode, background,
+                              ThemeFor(background)};
     AppendSvgFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(), style,
                    text);
   }
   if (format == FrameFormat::kAsciicast) {
     sink.ansi.clear();
     AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
-                    colourMode, sink.ansi);
+                    colourMode, sink.ansi, background);
     sink.record->AppendFrame(sink.ansi, text);
   }
   if (format != FrameFormat::kJson) return;
@@ -103,7 +105,8 @@ void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& 
 std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* levels,
                                        const RenderCommandOptions& options,
                                        const RenderOptions& renderOptions, FrameFormat format,
-                                       ColourMode colourMode, FrameSink& sink) {
+                                       ColourMode colourMode, Background background,
+                                       FrameSink& sink) {
   ViewParams view = DefaultView(scene.diagonalModelUnits);
   view.theta = options.theta;
   view.phi = options.phi;
@@ -117,7 +120,7 @@ std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* l
     const Scene& drawn = *PickDetail(levels, scene, camera, renderOptions).scene;
     sink.renderer.Render(drawn, camera, renderOptions, sink.depth, sink.cells);
     sink.text.clear();
-    AppendFrame(drawn, camera, renderOptions, format, colourMode, sink);
+    AppendFrame(drawn, camera, renderOptions, format, colourMode, background, sink);
     const std::string& text = sink.text;
     if (sink.file) {
       if (auto problem = sink.file->Write(text)) return problem;
@@ -153,6 +156,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
                               ? std::optional(ColourMode::kNone)
                               : ParseColourMode(options.colour.empty() ? "256" : options.colour);
   if (!colourMode) return UsageError("--color must be none, 256, truecolor or auto");
+  const auto background = ParseBackground(options.background.empty() ? "dark" : options.background);
+  if (!background) return UsageError("--background must be dark or light");
   if (!std::isfinite(options.theta) || !std::isfinite(options.phi) ||
       !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {
     return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
@@ -200,7 +205,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   sink.centerDepth.Resize(widthCells, heightCells);
   sink.centerCells.Resize(widthCells, heightCells);
   if (*format == FrameFormat::kAsciicast)
-    sink.record.emplace(widthCells, heightCells, options.framesPerSecond);
+    sink.record.emplace(widthCells, heightCells, options.framesPerSecond, ThemeFor(*background));
   LoadOptions loadOptions(options.loadLimits);
   loadOptions.formatHint = options.inputFormat;
   loadOptions.importerOnly = options.reader == "assimp";
@@ -224,7 +229,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));
     if (const auto problem = openOutput()) return outputFailed(*problem);
     if (const auto problem = WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions,
-                                         *format, ResolveColourMode(*colourMode), sink)) {
+                                         *format, ResolveColourMode(*colourMode), *background,
+                                         sink)) {
       return outputFailed(*problem);
     }
   }

@@ -38,6 +38,9 @@ struct RenderCommandOptions {
   /// (render: 256, so dumps do not depend on the environment; viewer: auto).
   std::string colour;
   bool mono = false;             ///< --mono: --color none
+  /// --background dark|light: the terminal the colours are made for; render's
+  /// default is dark whatever the terminal, so dumps stay reproducible.
+  std::string background;  ///< empty: the command's default
   std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
   /// --lod auto|off; empty: the command's default (render: off, exact dumps; viewer: auto).
   std::string lod;

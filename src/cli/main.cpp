@@ -195,6 +195,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
       ->check(CLI::IsMember({"none", "256", "truecolor", "24bit", "auto"}));
   command.add_flag("--mono", options.mono, "no colour: --color none");
   command
+      .add_option("--background", options.background,
+                  "the terminal's background the shades are made for: dark or light (render: "
+                  "dark; viewer: from COLORFGBG, else dark)")
+      ->check(CLI::IsMember({"dark", "light"}));
+  command
       .add_option("--lod", options.lod,
                   "level of detail: auto (a simplified copy of a big model where its triangles "
                   "are far below a sample; the viewer's default) or off (exact; render's default)")
@@ -209,6 +214,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.colour = look.mono
                       ? termshade::ColourMode::kNone
                       : *termshade::ParseColourMode(look.colour.empty() ? "auto" : look.colour);
+  if (!look.background.empty()) viewer.background = termshade::ParseBackground(look.background);
   viewer.render.method = *termshade::ParseMethod(look.method);
   viewer.render.shade = *termshade::ParseShadeMode(look.shade);
   if (const auto problem = termshade::ShadeRamp::Problem(look.ramp)) {

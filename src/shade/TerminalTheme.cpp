@@ -4,6 +4,15 @@
 
 namespace termshade {
 
+TerminalTheme ThemeFor(Background background) {
+  TerminalTheme theme;
+  if (background == Background::kLight) {
+    theme.foreground = {0, 0, 0};
+    theme.background = {255, 255, 255};
+  }
+  return theme;
+}
+
 Srgb8 ShownColour(const TermColour& colour, const TerminalTheme& theme, bool background) {
   switch (colour.kind) {
     case TermColour::Kind::kIndexed:

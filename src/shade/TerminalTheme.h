@@ -3,6 +3,7 @@
 #include <array>
 #include <string>
 
+#include "shade/Background.h"
 #include "shade/CellColour.h"
 
 namespace termshade {
@@ -31,6 +32,9 @@ struct TerminalTheme {
                                  {0, 255, 255},
                                  {255, 255, 255}}};
 };
+
+/// The default theme for a dark terminal, or black on white for a light one.
+TerminalTheme ThemeFor(Background background);
 
 /// The sRGB colour a terminal with `theme` shows for `colour`, as a glyph's
 /// ink (foreground) or a cell's background.

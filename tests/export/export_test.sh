@@ -66,6 +66,7 @@ for case in "ramp none" "ascii 256" "blocks truecolor" "quadrants 256" "sextants
   "$bin" render "${args[@]}" --format ansi >"$work/$name.ans"
   expect "${name}_shows_the_ansi_cells" "${readback[@]}" svg-cells "$work/$name.png" "$work/$name.ans" 8 16
 done
+expect svg_light_background bash -c "'$bin' render '$src/data/cube.dat' --format svg --background light --size 20x8 | grep -q 'fill=\"#ffffff\"/>'"
 expect svg_one_frame_only bash -c "! '$bin' render '$src/data/cube.dat' --frames 2 --format svg >/dev/null 2>'$work/err' && grep -q 'one frame' '$work/err'"
 
 echo "$passed passed, $failed failed"

@@ -128,8 +128,8 @@ void AppendTextFrame(const CellBuffer& cells, std::string& out) {
 }
 
 void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, int levelCount,
-                     ColourMode mode, std::string& out) {
-  CellColourMap colours(faceColours, levelCount, mode);
+                     ColourMode mode, std::string& out, Background background) {
+  CellColourMap colours(faceColours, levelCount, mode, background);
   for (int row = 0; row < cells.HeightCells(); ++row) {
     TermColour current, currentBack;  // the terminal's defaults until a cell sets one
     for (int col = 0; col < cells.WidthCells(); ++col) {

@@ -140,7 +140,7 @@ void AppendSvgFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, i
   const double frameWidth = widthPx * cells.WidthCells(),
                frameHeight = heightPx * cells.HeightCells();
   const bool coloured = style.colourMode != ColourMode::kNone;
-  CellColourMap colours(faceColours, levelCount, style.colourMode);
+  CellColourMap colours(faceColours, levelCount, style.colourMode, style.background);
   // Step 1: the document and the terminal's background.
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
   AppendNumber(frameWidth, out);

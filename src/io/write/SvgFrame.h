@@ -18,7 +18,8 @@ constexpr double kSvgCellWidthPx = 8.0;
 struct SvgFrameStyle {
   double cellAspect = 2.0;  ///< cell height / cell width
   ColourMode colourMode = ColourMode::k256;
-  TerminalTheme theme;
+  Background background = Background::kDark;  ///< the shades' background (CellColour)
+  TerminalTheme theme;                         ///< ThemeFor(background) as a rule
 };
 
 /// The frame as one standalone SVG document, drawn as a terminal shows the
