@@ -16,6 +16,7 @@
 #include "MethodsBench.h"
 #include "ModelsBench.h"
 #include "TerminalBench.h"
+#include "cli/ConfigFile.h"
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
 #include "cli/NumberChecks.h"
@@ -34,7 +35,7 @@ using termshade::RenderCommandOptions;
 
 // CLI11's own exit codes are not ours: help is 0, every usage error 2. Its
 // text quotes the command line, so it is escaped before reaching a terminal.
-int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
+int ParseOrExit(CLI::App& app, int argc, char** argv, const std::string& configPath, bool& done) {
   using termshade::SanitizeForTerminal;
   using termshade::SanitizeLinesForTerminal;
   try {
@@ -51,6 +52,11 @@ int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
     std::cout << SanitizeLinesForTerminal(version.what()) << "\n";
     done = true;
     return 0;
+  } catch (const CLI::ConfigError& e) {  // a key or section of the file
+    std::cerr << "termshade: " << SanitizeForTerminal(configPath) << ": "
+              << SanitizeLinesForTerminal(e.what()) << "\n";
+    done = true;
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "termshade: " << SanitizeLinesForTerminal(e.what()) << "\n";
     if (const std::string hint = termshade::NearestOptionHint(app); !hint.empty()) {
@@ -241,6 +247,14 @@ int Run(int argc, char** argv) {
       "termshade"};  // named here, so a hostile argv[0] never reaches the help text
   std::string generateWhat;
   termshade::SetUpHelp(app, TERMSHADE_VERSION, generateWhat);
+  // Defaults from a configuration file: the user's for the viewer, a named one for render.
+  termshade::ConfigChoice config = termshade::ChooseConfig(argc, argv);
+  if (const auto problem = termshade::ConfigFileProblem(config)) {
+    std::cerr << "termshade: " << *problem << "\n";
+    return 2;
+  }
+  bool printConfig = false;
+  termshade::AddConfigOptions(app, config, printConfig);
   app.require_subcommand(0, 1);
 
   // The viewer: termshade [MODEL...]
@@ -291,6 +305,9 @@ int Run(int argc, char** argv) {
                    "content cannot tell it (standard input)")
       ->type_name("EXT");
   AddLoadLimitOptions(*renderCommand, render.loadLimits);
+  renderCommand->add_flag("--print-config", printConfig,
+                          "print the effective configuration (defaults, --config FILE and the "
+                          "command line) and exit");
 
   renderCommand
       ->add_option("--reader", render.reader,
@@ -434,8 +451,13 @@ int Run(int argc, char** argv) {
 
   termshade::AddExamples(app);
   bool done = false;
-  const int parseCode = ParseOrExit(app, argc, argv, done);
+  const int parseCode =
+      ParseOrExit(app, static_cast<int>(config.argv.size()), config.argv.data(), config.path, done);
   if (done) return parseCode;
+  if (printConfig) {
+    std::cout << termshade::SanitizeLinesForTerminal(termshade::EffectiveConfig(app));
+    return 0;
+  }
   if (!generateWhat.empty()) return termshade::RunGenerate(app, TERMSHADE_VERSION, generateWhat);
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
