@@ -372,8 +372,8 @@ std::string ModeText(const TerminalBenchOptions& options) {
          (options.answer ? "" : ", DA1 never answered");
 }
 
-// The link mode: 20 quick presses, the turntable, space, q, each timed at
-// the terminal's end of the link.
+// The link mode: 20 quick presses, the turntable then space, the turntable
+// then q, each timed at the terminal's end of the link.
 int RunLinkBench(const TerminalBenchOptions& options, const std::vector<std::string>& argv) {
   const LinkSpec spec = *options.link;
   PtySession session;
@@ -410,7 +410,10 @@ int RunLinkBench(const TerminalBenchOptions& options, const std::vector<std::str
   const double spaceAt = RealtimeSeconds();
   link.Press(" ");
   const double stop = std::max(0.0, link.RunUntilQuiet(1.0, 300.0) - spaceAt);
-  // Step 4: q, until the viewer has ended and its last bytes arrived.
+  // Step 4: the turntable again (at most 5 s), then q while it turns, until
+  // the viewer has ended and its last bytes arrived.
+  link.Press(" ");
+  link.RunUntil(RealtimeSeconds() + std::min(5.0, options.turntableSeconds));
   const double quitAt = RealtimeSeconds();
   link.Press("q");
   const double ended = link.RunUntilEnded(300.0);
@@ -434,8 +437,10 @@ int RunLinkBench(const TerminalBenchOptions& options, const std::vector<std::str
   } else {
     std::printf("%-46s %10s\n", "q gives the prompt back, s", "(no end)");
   }
-  std::printf("(%d presses 45 ms apart; turntable %.0f s; times from the key at the terminal)\n",
-              options.arrowPresses, options.turntableSeconds);
+  std::printf(
+      "(%d presses 45 ms apart; turntable %.0f s, then space; turntable %.0f s, then q; times "
+      "from the key at the terminal to the last byte arriving)\n",
+      options.arrowPresses, options.turntableSeconds, std::min(5.0, options.turntableSeconds));
   return ended > 0.0 ? 0 : 1;
 }
 
