@@ -13,8 +13,10 @@
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
 #include "io/load/ModelLoader.h"
+#include "io/write/AsciicastRecording.h"
 #include "io/write/FrameFormats.h"
 #include "io/write/OutputFile.h"
+#include "io/write/SvgFrame.h"
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
@@ -56,7 +58,9 @@ struct FrameSink {
   DepthBuffer centerDepth;
   CellBuffer centerCells;
   std::string text;
-  std::optional<OutputFile> file;  ///< unset: standard output
+  std::string ansi;                          ///< the ansi dump a picture is made from
+  std::optional<AsciicastRecording> record;  ///< --format asciicast: the recording
+  std::optional<OutputFile> file;            ///< unset: standard output
 };
 
 // What one frame becomes in the chosen format.
@@ -67,6 +71,17 @@ void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& 
   if (format == FrameFormat::kAnsi) {
     AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
                     colourMode, text);
+  }
+  if (format == FrameFormat::kSvg) {
+    const SvgFrameStyle style{camera.projection.cellAspect, colourMode, TerminalTheme{}};
+    AppendSvgFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(), style,
+                   text);
+  }
+  if (format == FrameFormat::kAsciicast) {
+    sink.ansi.clear();
+    AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
+                    colourMode, sink.ansi);
+    sink.record->AppendFrame(sink.ansi, text);
   }
   if (format != FrameFormat::kJson) return;
   if (sink.renderer.LastSampleGrid().Count() <= 1) {
@@ -127,7 +142,11 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   const auto detail = ParseDetailMode(options.lod.empty() ? "off" : options.lod);
   if (!detail) return UsageError("--lod must be auto or off");
   const auto format = ParseFrameFormat(options.format);
-  if (!format) return UsageError("--format must be text, ansi or json");
+  if (!format) return UsageError("--format must be text, ansi, json, svg or asciicast");
+  if (*format == FrameFormat::kSvg && options.frames * options.modelPaths.size() > 1)
+    return UsageError("--format svg draws one frame: one model and --frames 1");
+  if (!std::isfinite(options.framesPerSecond) || options.framesPerSecond <= 0.0)
+    return UsageError("--fps must be a positive number");
   if (const auto problem = ShadeRamp::Problem(options.ramp))
     return UsageError("--ramp: " + *problem);
   const auto colourMode = options.mono
@@ -169,7 +188,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.shade = *shade;
   renderOptions.ramp = ShadeRamp(options.ramp);
   renderOptions.glyphs = *glyphs;
-  renderOptions.twoColour = *format == FrameFormat::kAnsi;  // text and json have no colours
+  // Text and json have no colours; ansi and the pictures made from it do.
+  renderOptions.twoColour = *format == FrameFormat::kAnsi || *format == FrameFormat::kSvg ||
+                            *format == FrameFormat::kAsciicast;
   renderOptions.cullBackFaces = !options.noCull;
   renderOptions.threads = options.threads;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
@@ -178,6 +199,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   sink.cells.Resize(widthCells, heightCells);
   sink.centerDepth.Resize(widthCells, heightCells);
   sink.centerCells.Resize(widthCells, heightCells);
+  if (*format == FrameFormat::kAsciicast)
+    sink.record.emplace(widthCells, heightCells, options.framesPerSecond);
   LoadOptions loadOptions(options.loadLimits);
   loadOptions.formatHint = options.inputFormat;
   loadOptions.importerOnly = options.reader == "assimp";
@@ -206,7 +229,16 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     }
   }
 
-  // Step 4: the file committed whole, or stdout flushed.
+  // Step 4: a recording's closing event, then the file committed whole, or stdout flushed.
+  if (sink.record) {
+    sink.text.clear();
+    sink.record->AppendEnd(sink.text);
+    if (sink.file) {
+      if (const auto problem = sink.file->Write(sink.text)) return outputFailed(*problem);
+    } else {
+      std::cout << sink.text;
+    }
+  }
   if (sink.file) {
     if (const auto problem = sink.file->Commit()) return outputFailed(*problem);
     return exitCode;

@@ -28,6 +28,7 @@ struct RenderCommandOptions {
   std::string outputPath;  ///< empty: stdout
   int frames = 1;
   double stepRadians = 0.1;
+  double framesPerSecond = 25.0;  ///< --fps: asciicast frames a second (the viewer's cap)
   bool noCull = false;
   int threads = 0;              ///< --threads: frame threads, 0 every core
   std::string inputFormat;      ///< --input-format: extension for content that cannot be sniffed

@@ -263,12 +263,19 @@ int Run(int argc, char** argv) {
       ->type_name("MODEL");
   AddViewOptions(*renderCommand, render);
   AddLookOptions(*renderCommand, render);
-  renderCommand->add_option("--format", render.format, "text (default), ansi or json")
-      ->check(CLI::IsMember({"text", "ansi", "json"}));
+  renderCommand
+      ->add_option("--format", render.format,
+                   "text (default), ansi, json, svg (a picture of the frame) or asciicast (an "
+                   "asciinema recording of the turntable)")
+      ->check(CLI::IsMember({"text", "ansi", "json", "svg", "asciicast"}));
   renderCommand->add_option("-o,--output", render.outputPath, "write to FILE instead of stdout")
       ->type_name("FILE");
   renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
       ->check(CLI::Range(1, 100000));
+  renderCommand
+      ->add_option("--fps", render.framesPerSecond,
+                   "asciicast: frames a second of the recording (default 25, the viewer's)")
+      ->check(CLI::Range(0.01, 1000.0));
   AddAngleOption(*renderCommand, "--step", render.stepRadians,
                  "turntable: theta step between frames, radians or Ndeg (default 0.1)");
   AddUpOption(*renderCommand, render.upAxis);
@@ -303,7 +310,8 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(size_t{8}, size_t{50000000}));
 
   // Measurements: termshade bench terminal [options]
-  CLI::App* benchCommand = app.add_subcommand("bench", "measure the program (see README)");
+  CLI::App* benchCommand =
+      app.add_subcommand("bench", "measure the program (see docs/performance.md)");
   benchCommand->require_subcommand(1);
   termshade::TerminalBenchOptions terminalBench;
   CLI::App* terminalCommand = benchCommand->add_subcommand(

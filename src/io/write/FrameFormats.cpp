@@ -115,6 +115,8 @@ std::optional<FrameFormat> ParseFrameFormat(std::string_view name) {
   if (name == "text") return FrameFormat::kText;
   if (name == "ansi") return FrameFormat::kAnsi;
   if (name == "json") return FrameFormat::kJson;
+  if (name == "svg") return FrameFormat::kSvg;
+  if (name == "asciicast") return FrameFormat::kAsciicast;
   return std::nullopt;
 }
 

@@ -14,8 +14,10 @@
 
 namespace termshade {
 
-/// Frame dump formats of SPEC 7.
-enum class FrameFormat { kText, kAnsi, kJson };
+/// Frame dump formats of SPEC 7, and the pictures made from the ansi dump:
+/// an SVG picture (io/write/SvgFrame.h) and an asciinema recording
+/// (io/write/AsciicastRecording.h).
+enum class FrameFormat { kText, kAnsi, kJson, kSvg, kAsciicast };
 
 std::optional<FrameFormat> ParseFrameFormat(std::string_view name);
 
