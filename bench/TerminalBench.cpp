@@ -35,7 +35,8 @@ class RequestCounter {
   int Count(std::string_view bytes) {
     const std::string text = tail_ + std::string(bytes);
     int found = 0;
-    for (size_t at = text.find("\x1b[c"); at != std::string::npos; at = text.find("\x1b[c", at + 3)) {
+    for (size_t at = text.find("\x1b[c"); at != std::string::npos;
+         at = text.find("\x1b[c", at + 3)) {
       ++found;
     }
     // Keep what may begin a request cut by the end of this piece.
@@ -419,11 +420,11 @@ int RunLinkBench(const TerminalBenchOptions& options, const std::vector<std::str
   const double ended = link.RunUntilEnded(300.0);
   session.Wait();
 
-  std::printf("termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, %s\n",
-              options.widthCells, options.heightCells,
-              options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)"
-                                        : options.modelPath.c_str(),
-              ModeText(options).c_str());
+  std::printf(
+      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, %s\n", options.widthCells,
+      options.heightCells,
+      options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str(),
+      ModeText(options).c_str());
   std::printf("link: %.0f kbit/s, %.0f ms each way (the bench plays the terminal at its end)\n",
               spec.bytesPerSecond * 8.0 / 1000.0, spec.delaySeconds * 1000.0);
   std::printf("%-46s %10s\n", "measure", "value");
@@ -515,11 +516,11 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
 
   // Step 5: the report.
   const int turntableFrames = std::max(1, CountBursts(arrivals, 0.015));
-  std::printf("termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, %s, lod %s\n",
-              options.widthCells, options.heightCells,
-              options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)"
-                                        : options.modelPath.c_str(),
-              ModeText(options).c_str(), options.lod.empty() ? "default (auto)" : options.lod.c_str());
+  std::printf(
+      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, %s, lod %s\n",
+      options.widthCells, options.heightCells,
+      options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str(),
+      ModeText(options).c_str(), options.lod.empty() ? "default (auto)" : options.lod.c_str());
   std::printf("%-38s %12s\n", "measure", "value");
   std::printf("%-38s %12ld\n", "first frame, bytes", firstFrameBytes);
   std::printf("%-38s %12.0f\n", "per arrow key (median), bytes", Median(arrowBytes));

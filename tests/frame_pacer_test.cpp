@@ -35,6 +35,23 @@ TEST(FramePacer, AnswersComeInOrderOnePerRequest) {
   EXPECT_TRUE(pacer.MayDraw(t0 + milliseconds(900)));
 }
 
+TEST(FramePacer, SmallFramesMayShareTheBudget) {
+  FramePacer pacer;
+  const Clock::time_point t0{};
+  pacer.RequestSent(t0, 0);  // the probe: the first frame need not wait for it
+  EXPECT_TRUE(pacer.MayDraw(t0));
+  pacer.RequestSent(t0, 1500);
+  EXPECT_TRUE(pacer.MayDraw(t0));
+  pacer.RequestSent(t0, 1500);
+  EXPECT_TRUE(pacer.MayDraw(t0));
+  pacer.RequestSent(t0, 1500);  // 4500 bytes in flight: past the budget
+  EXPECT_FALSE(pacer.MayDraw(t0));
+  pacer.AnswerRead(t0 + milliseconds(100));  // the probe's
+  EXPECT_FALSE(pacer.MayDraw(t0 + milliseconds(100)));
+  pacer.AnswerRead(t0 + milliseconds(150));
+  EXPECT_TRUE(pacer.MayDraw(t0 + milliseconds(150)));
+}
+
 TEST(FramePacer, ATerminalThatNeverAnswersIsPacedWithoutAnswers) {
   FramePacer pacer;
   const Clock::time_point t0{};

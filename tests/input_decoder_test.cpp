@@ -77,8 +77,8 @@ TEST(InputDecoder, WhatIsNotAWholeReportComesOutAsItsKeys) {
 
 TEST(InputDecoder, DeviceAttributeAnswersAmongKeysAndReports) {
   // tmux's, xterm's and the Linux console's answers, a key, a report.
-  const auto events = Decode(
-      "\x1b[?1;2cx\x1b[?64;1;2;6;9;15;16;17;18;21;22;28c\x1b[<0;2;3M\x1b[?6c\x1b[?62;c");
+  const auto events =
+      Decode("\x1b[?1;2cx\x1b[?64;1;2;6;9;15;16;17;18;21;22;28c\x1b[<0;2;3M\x1b[?6c\x1b[?62;c");
   ASSERT_EQ(events.size(), 6U);
   EXPECT_TRUE(events[0].deviceAnswer);
   EXPECT_FALSE(events[1].deviceAnswer);
@@ -97,9 +97,9 @@ TEST(InputDecoder, DeviceAttributeAnswersAmongKeysAndReports) {
 
 TEST(InputDecoder, WhatIsNotAWholeAnswerComesOutAsItsKeys) {
   // No digit, a foreign byte, another final byte, cut short, too long.
-  for (const std::string& bytes : std::vector<std::string>{"\x1b[?c", "\x1b[?1x2c", "\x1b[?1;2R",
-                                                          "\x1b[?1;2", "\x1b[c",
-                                                          "\x1b[?" + std::string(70, '1') + "c"}) {
+  for (const std::string& bytes :
+       std::vector<std::string>{"\x1b[?c", "\x1b[?1x2c", "\x1b[?1;2R", "\x1b[?1;2", "\x1b[c",
+                                "\x1b[?" + std::string(70, '1') + "c"}) {
     const auto events = Decode(bytes);
     ASSERT_EQ(events.size(), bytes.size()) << "bytes of " << bytes.substr(1);
     for (size_t i = 0; i < bytes.size(); ++i) {
@@ -142,11 +142,11 @@ TEST(InputDecoder, AnAnswerSplitBetweenReadsIsAwaited) {
 // terminal might send): decoding ends, every byte is one key or part of one
 // report, and reports' cells are in range.
 TEST(InputDecoder, RandomBurstsDecodeEveryByteOnce) {
-  const std::vector<std::string> pieces{"\x1b",      "[",     "<",      "M",
-                                        "m",         ";",     "0",      "32",
-                                        "64",        "99999", "123456", "\x1b[<0;41;13M",
-                                        "\x1b[M !!", "q",     "\xff",   std::string(1, '\0'),
-                                        "\x1b[?1;2c", "?",   "c"};
+  const std::vector<std::string> pieces{"\x1b",       "[",     "<",      "M",
+                                        "m",          ";",     "0",      "32",
+                                        "64",         "99999", "123456", "\x1b[<0;41;13M",
+                                        "\x1b[M !!",  "q",     "\xff",   std::string(1, '\0'),
+                                        "\x1b[?1;2c", "?",     "c"};
   std::mt19937 random(20261203);
   for (int trial = 0; trial < 20000; ++trial) {
     std::string bytes;

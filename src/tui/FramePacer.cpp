@@ -30,7 +30,7 @@ FramePacer::Clock::time_point FramePacer::Deadline() const {
 
 bool FramePacer::MayDraw(Clock::time_point now) {
   if (inFlight_.empty() || !answering_) return true;
-  if (now < Deadline()) return false;
+  if (now < Deadline()) return BytesInFlight() < kBytesInFlightBudget;
   // No answer in time: the requests in flight are kept (their answers may
   // still come), and frames are paced without them until one does.
   answering_ = false;

@@ -10,11 +10,13 @@ namespace termshade {
 /// Flow control by the terminal's own answer. After each frame the viewer
 /// sends kRequest (primary device attributes, ESC [ c); a terminal answers
 /// it in order, once it has read every byte sent before it, so an answer
-/// means that frame has reached the screen. A frame may be drawn only when
-/// every request is answered: at most one frame is in flight, whatever the
-/// link (over SSH the backlog would otherwise pile up in sshd's send buffer,
-/// seconds of old pictures the viewer never feels). On a fast terminal the
-/// answer is back in well under a millisecond.
+/// means that frame has reached the screen. A frame may be drawn only while
+/// the frames not yet answered for hold less than kBytesInFlightBudget: one
+/// big frame at a time, or a few small ones (so a round trip does not cap
+/// the frame rate of small frames), whatever the link. Over SSH the backlog
+/// would otherwise pile up in sshd's send buffer, seconds of old pictures
+/// the viewer never feels. On a fast terminal the answer is back in well
+/// under a millisecond.
 ///
 /// A terminal that does not answer (kFirstAnswerTimeout after the first
 /// request, before any answer; kAnswerTimeout once it has answered) is paced
@@ -35,13 +37,16 @@ class FramePacer {
   static constexpr std::chrono::milliseconds kFirstAnswerTimeout{1000};
   /// Once answers have come: a request this old is given up as lost.
   static constexpr std::chrono::milliseconds kAnswerTimeout{5000};
+  /// Bytes of frames in flight below which another may go: 0.13 s of a
+  /// 256 kbit/s link, the most a key may wait behind beyond one frame.
+  static constexpr size_t kBytesInFlightBudget = 4096;
 
   /// A request was sent at `now`, after `frameBytes` bytes of a frame.
   void RequestSent(Clock::time_point now, size_t frameBytes);
   /// An answer was read at `now`: the oldest request's.
   void AnswerRead(Clock::time_point now);
-  /// Whether the next frame may go out now: no request in flight, or the
-  /// terminal does not answer. Notes a timeout that has passed.
+  /// Whether the next frame may go out now: the frames in flight are under
+  /// the budget, or the terminal does not answer. Notes a timeout that has passed.
   bool MayDraw(Clock::time_point now);
   /// Milliseconds until a timeout may change MayDraw, or -1 (none pending).
   int WakeMs(Clock::time_point now) const;

@@ -599,8 +599,8 @@ class EventLoop {
   ScreenPainter painter_;
   TerminalWriter writer_;
   FramePacer pacer_;
-  bool turning_ = false;                 ///< the turntable was on at the last look
-  Clock::time_point lastTurn_;           ///< when the turntable last turned
+  bool turning_ = false;                  ///< the turntable was on at the last look
+  Clock::time_point lastTurn_;            ///< when the turntable last turned
   Clock::time_point nextTurntableFrame_;  ///< its next frame is due
   ScreenGrid grid_;
   Renderer renderer_;
