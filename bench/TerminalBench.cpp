@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -15,10 +16,38 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace termshade {
 namespace {
+
+// What a terminal answers to DA1 (xterm's VT220 answer).
+constexpr std::string_view kDeviceAnswer = "\x1b[?62;22c";
+// What the link's sender holds before it stops reading the viewer's pty (and
+// the viewer's writes block): sshd's send buffer over a slow link levelled
+// off at about a megabyte (issue 31).
+constexpr size_t kSenderBufferBytes = 1 << 20;
+
+// Counts the DA1 requests (ESC [ c) in a stream read in pieces.
+class RequestCounter {
+ public:
+  int Count(std::string_view bytes) {
+    const std::string text = tail_ + std::string(bytes);
+    int found = 0;
+    for (size_t at = text.find("\x1b[c"); at != std::string::npos;
+         at = text.find("\x1b[c", at + 3)) {
+      ++found;
+    }
+    // Keep what may begin a request cut by the end of this piece.
+    tail_ = text.size() >= 2 ? text.substr(text.size() - 2) : text;
+    if (tail_.find("\x1b[c") != std::string::npos) tail_.clear();
+    return found;
+  }
+
+ private:
+  std::string tail_;
+};
 
 double RealtimeSeconds() {
   timespec now{};
@@ -62,9 +91,27 @@ class PtySession {
     if (master_ >= 0) close(master_);
   }
 
-  void Send(const std::string& keys) {
+  void Send(std::string_view keys) {
     [[maybe_unused]] const ssize_t n = write(master_, keys.data(), keys.size());
   }
+
+  /// Answer each DA1 request at once, as a local terminal does.
+  void AnswerRequests(bool answer) { answer_ = answer; }
+
+  /// Appends what the viewer wrote that is waiting now; false once the
+  /// viewer has closed the terminal (it ended).
+  bool ReadAvailable(std::string& out) {
+    char buffer[65536];
+    for (;;) {
+      const ssize_t n = read(master_, buffer, sizeof buffer);
+      if (n > 0) {
+        out.append(buffer, static_cast<size_t>(n));
+        continue;
+      }
+      return n < 0 && errno == EAGAIN;
+    }
+  }
+  int MasterFd() const { return master_; }
 
   // Waits up to limitMs for the first output (a sanitizer build under strace
   // on a busy machine can take seconds to start), then reads until quiet.
@@ -115,11 +162,15 @@ class PtySession {
     for (ssize_t n = read(master_, buffer, sizeof buffer); n > 0;
          n = read(master_, buffer, sizeof buffer)) {
       total += n;
+      const int requests = answer_ ? requests_.Count({buffer, static_cast<size_t>(n)}) : 0;
+      for (int i = 0; i < requests; ++i) Send(kDeviceAnswer);
     }
     return total;
   }
 
   int master_ = -1;
+  bool answer_ = true;
+  RequestCounter requests_;
   pid_t pid_ = -1;
 };
 
@@ -227,9 +278,183 @@ double Median(std::vector<long> values) {
                            : 0.5 * static_cast<double>(values[mid - 1] + values[mid]);
 }
 
+// The viewer behind a throttled link (both ways), the bench the terminal at
+// the far end: it answers DA1 requests as they arrive, and notes when the
+// viewer's bytes arrive.
+class LinkedTerminal {
+ public:
+  LinkedTerminal(PtySession& session, LinkSpec spec, bool answer)
+      : session_(session), down_(spec), up_(spec), spec_(spec), answer_(answer) {}
+
+  /// Keys typed now, at the terminal.
+  void Press(std::string_view keys) { up_.Push(RealtimeSeconds(), keys); }
+  /// Runs the link until `until` (realtime seconds).
+  void RunUntil(double until) {
+    while (RealtimeSeconds() < until) Step(until);
+  }
+  /// Runs until nothing has arrived for quietSeconds (at most limitSeconds);
+  /// returns when the last bytes arrived.
+  double RunUntilQuiet(double quietSeconds, double limitSeconds) {
+    const double start = RealtimeSeconds();
+    for (;;) {
+      const double now = RealtimeSeconds();
+      const double quietFrom = std::max(lastArrival_, start);
+      if (now - quietFrom >= quietSeconds || now - start >= limitSeconds) break;
+      Step(quietFrom + quietSeconds);
+    }
+    return lastArrival_;
+  }
+  /// Runs until the viewer has ended and all it wrote has arrived (at most
+  /// limitSeconds); returns then, plus the delay its end takes to cross the
+  /// link (ssh's exit message). 0 if it did not end.
+  double RunUntilEnded(double limitSeconds) {
+    const double start = RealtimeSeconds();
+    while (!(ended_ && down_.Empty()) && RealtimeSeconds() - start < limitSeconds) {
+      Step(start + limitSeconds);
+    }
+    if (!ended_ || !down_.Empty()) return 0.0;
+    return std::max(lastArrival_, endedAt_ + spec_.delaySeconds);
+  }
+  long BytesArrived() const { return arrived_; }
+  long BytesWritten() const { return written_; }
+  long WriteBursts() const { return bursts_; }
+
+ private:
+  void Step(double deadline) {
+    double now = RealtimeSeconds();
+    const bool reading = !ended_ && down_.QueuedBytes() < kSenderBufferBytes;
+    if (reading) {
+      std::string out;
+      if (!session_.ReadAvailable(out)) {
+        ended_ = true;
+        endedAt_ = now;
+      }
+      if (!out.empty()) {
+        if (now - lastWrite_ > 0.015) ++bursts_;  // one burst, one frame
+        lastWrite_ = now;
+        written_ += static_cast<long>(out.size());
+        down_.Push(now, out);
+      }
+    }
+    if (const std::string arrived = down_.TakeArrived(now); !arrived.empty()) {
+      arrived_ += static_cast<long>(arrived.size());
+      lastArrival_ = now;
+      const int requests = requests_.Count(arrived);
+      for (int i = 0; answer_ && i < requests; ++i) up_.Push(now, kDeviceAnswer);
+    }
+    if (const std::string keys = up_.TakeArrived(now); !keys.empty() && !ended_) {
+      session_.Send(keys);
+    }
+    now = RealtimeSeconds();
+    const double next = std::min({down_.NextArrival(), up_.NextArrival(), deadline});
+    const int waitMs = static_cast<int>(std::clamp((next - now) * 1000.0 + 0.5, 0.0, 100.0));
+    pollfd fd{session_.MasterFd(), POLLIN, 0};
+    poll(&fd, reading ? 1 : 0, waitMs);
+  }
+
+  PtySession& session_;
+  ThrottledLink down_;  ///< viewer to terminal
+  ThrottledLink up_;    ///< terminal to viewer
+  LinkSpec spec_;
+  bool answer_;
+  RequestCounter requests_;
+  bool ended_ = false;
+  double endedAt_ = 0.0;
+  double lastArrival_ = 0.0;
+  double lastWrite_ = 0.0;
+  long arrived_ = 0;
+  long written_ = 0;
+  long bursts_ = 0;
+};
+
+std::string ModeText(const TerminalBenchOptions& options) {
+  return "glyphs " + (options.glyphs.empty() ? std::string("picked") : options.glyphs) +
+         ", colour " + (options.colour.empty() ? std::string("auto") : options.colour) +
+         (options.answer ? "" : ", DA1 never answered");
+}
+
+// The link mode: 20 quick presses, the turntable then space, the turntable
+// then q, each timed at the terminal's end of the link.
+int RunLinkBench(const TerminalBenchOptions& options, const std::vector<std::string>& argv) {
+  const LinkSpec spec = *options.link;
+  PtySession session;
+  if (!session.Start(argv, options.widthCells, options.heightCells)) {
+    std::cerr << "termshade bench: cannot open a pseudo-terminal\n";
+    return 1;
+  }
+  LinkedTerminal link(session, spec, options.answer);
+  // Step 1: the first frame, then whatever follows a load.
+  link.RunUntilQuiet(1.0, 60.0);
+  if (link.BytesArrived() == 0) {
+    std::cerr << "termshade bench: the viewer drew nothing in 60 s\n";
+    return 1;
+  }
+  if (options.settleSeconds > 0.0) link.RunUntil(RealtimeSeconds() + options.settleSeconds);
+  // Step 2: quick presses (xterm's keypad-mode right arrow), 45 ms apart.
+  double lastPress = 0.0;
+  for (int i = 0; i < options.arrowPresses; ++i) {
+    lastPress = RealtimeSeconds();
+    link.Press("\x1bOC");
+    link.RunUntil(lastPress + 0.045);
+  }
+  const double settle = std::max(0.0, link.RunUntilQuiet(1.0, 300.0) - lastPress);
+  // Step 3: the turntable, then space.
+  link.Press(" ");
+  const double turnStart = RealtimeSeconds();
+  const long arrivedBefore = link.BytesArrived(), writtenBefore = link.BytesWritten();
+  const long burstsBefore = link.WriteBursts();
+  link.RunUntil(turnStart + options.turntableSeconds);
+  const double turnSeconds = RealtimeSeconds() - turnStart;
+  const double arrivedRate = static_cast<double>(link.BytesArrived() - arrivedBefore) / turnSeconds;
+  const double writtenRate = static_cast<double>(link.BytesWritten() - writtenBefore) / turnSeconds;
+  const double frameRate = static_cast<double>(link.WriteBursts() - burstsBefore) / turnSeconds;
+  const double spaceAt = RealtimeSeconds();
+  link.Press(" ");
+  const double stop = std::max(0.0, link.RunUntilQuiet(1.0, 300.0) - spaceAt);
+  // Step 4: the turntable again (at most 5 s), then q while it turns, until
+  // the viewer has ended and its last bytes arrived.
+  link.Press(" ");
+  link.RunUntil(RealtimeSeconds() + std::min(5.0, options.turntableSeconds));
+  const double quitAt = RealtimeSeconds();
+  link.Press("q");
+  const double ended = link.RunUntilEnded(300.0);
+  session.Wait();
+
+  std::printf(
+      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, %s\n", options.widthCells,
+      options.heightCells,
+      options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str(),
+      ModeText(options).c_str());
+  std::printf("link: %.0f kbit/s, %.0f ms each way (the bench plays the terminal at its end)\n",
+              spec.bytesPerSecond * 8.0 / 1000.0, spec.delaySeconds * 1000.0);
+  std::printf("%-46s %10s\n", "measure", "value");
+  std::printf("%-46s %10.2f\n", "settle after the last of 20 quick presses, s", settle);
+  std::printf("%-46s %10.2f\n", "turntable: frames a second the viewer wrote", frameRate);
+  std::printf("%-46s %10.0f\n", "turntable: bytes a second the viewer wrote", writtenRate);
+  std::printf("%-46s %10.0f\n", "turntable: bytes a second arriving", arrivedRate);
+  std::printf("%-46s %10.2f\n", "turntable keeps turning after space, s", stop);
+  if (ended > 0.0) {
+    std::printf("%-46s %10.2f\n", "q gives the prompt back, s", ended - quitAt);
+  } else {
+    std::printf("%-46s %10s\n", "q gives the prompt back, s", "(no end)");
+  }
+  std::printf(
+      "(%d presses 45 ms apart; turntable %.0f s, then space; turntable %.0f s, then q; times "
+      "from the key at the terminal to the last byte arriving)\n",
+      options.arrowPresses, options.turntableSeconds, std::min(5.0, options.turntableSeconds));
+  return ended > 0.0 ? 0 : 1;
+}
+
 }  // namespace
 
 int RunTerminalBench(const TerminalBenchOptions& options) {
+  std::vector<std::string> viewerArgs{options.viewerPath};
+  if (!options.modelPath.empty()) viewerArgs.push_back(options.modelPath);
+  if (!options.lod.empty()) viewerArgs.insert(viewerArgs.end(), {"--lod", options.lod});
+  if (!options.glyphs.empty()) viewerArgs.insert(viewerArgs.end(), {"--glyphs", options.glyphs});
+  if (!options.colour.empty()) viewerArgs.insert(viewerArgs.end(), {"--color", options.colour});
+  if (options.link) return RunLinkBench(options, viewerArgs);
+
   const bool traced = options.traceWrites && std::system("command -v strace >/dev/null 2>&1") == 0;
   char logTemplate[] = "/tmp/termshade-bench-XXXXXX";
   const int logFd = mkstemp(logTemplate);
@@ -241,11 +466,10 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
     argv = {"strace", "-f",          "-qq", "-ttt", "-e", "trace=write,writev",
             "-e",     "signal=none", "-o",  logPath};
   }
-  argv.push_back(options.viewerPath);
-  if (!options.modelPath.empty()) argv.push_back(options.modelPath);
-  if (!options.lod.empty()) argv.insert(argv.end(), {"--lod", options.lod});
+  argv.insert(argv.end(), viewerArgs.begin(), viewerArgs.end());
 
   PtySession session;
+  session.AnswerRequests(options.answer);
   if (!session.Start(argv, options.widthCells, options.heightCells)) {
     std::cerr << "termshade bench: cannot open a pseudo-terminal\n";
     return 1;
@@ -293,10 +517,10 @@ int RunTerminalBench(const TerminalBenchOptions& options) {
   // Step 5: the report.
   const int turntableFrames = std::max(1, CountBursts(arrivals, 0.015));
   std::printf(
-      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, colour on, lod %s\n",
+      "termshade bench terminal: %dx%d cells, %s, TERM=xterm-256color, %s, lod %s\n",
       options.widthCells, options.heightCells,
       options.modelPath.empty() ? "demo scene (data/sphere_cone.dat)" : options.modelPath.c_str(),
-      options.lod.empty() ? "default (auto)" : options.lod.c_str());
+      ModeText(options).c_str(), options.lod.empty() ? "default (auto)" : options.lod.c_str());
   std::printf("%-38s %12s\n", "measure", "value");
   std::printf("%-38s %12ld\n", "first frame, bytes", firstFrameBytes);
   std::printf("%-38s %12.0f\n", "per arrow key (median), bytes", Median(arrowBytes));

@@ -15,9 +15,9 @@ runtime=(cmake ninja-build g++ libncurses-dev libcli11-dev libassimp-dev libmesh
 # GoogleTest, Google Benchmark, JSON for the dump tests; tmux and strace drive
 # the viewer; Assimp's own model corpus; man-db renders the installed man page;
 # zsh and fish check their completion scripts; rsvg-convert and Pillow read
-# the SVG export back.
+# the SVG export back; the SSH test starts its own sshd.
 test=(libgtest-dev libbenchmark-dev nlohmann-json3-dev tmux strace python3 assimp-testmodels
-      man-db zsh fish librsvg2-bin python3-pil)
+      man-db zsh fish librsvg2-bin python3-pil openssh-server openssh-client)
 ci=(clang libclang-rt-14-dev)
 
 list=false

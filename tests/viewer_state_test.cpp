@@ -68,7 +68,7 @@ TEST(ViewerState, ThetaWrapsIntoOneTurn) {
   for (int i = 0; i < 33; ++i) state.Apply(ViewerAction::kOrbitRight);  // past pi
   EXPECT_NEAR(state.View().theta, 3.2 - 2 * std::numbers::pi, 1e-12);
   for (int i = 0; i < 1000; ++i) {
-    state.TurntableStep();
+    state.TurntableAdvance(0.04);
     ASSERT_LE(std::fabs(state.View().theta), std::numbers::pi);
   }
 }

@@ -363,6 +363,25 @@ int Run(int argc, char** argv) {
                    "wait after the first screen before measuring, for a big model's load and "
                    "levels of detail (default 0)")
       ->check(termshade::FiniteIn(0.0, 600.0));
+  terminalCommand
+      ->add_option("--glyphs", terminalBench.glyphs, "the viewer's --glyphs (default: its pick)")
+      ->check(CLI::IsMember({"ramp", "ascii", "blocks", "quadrants", "sextants", "braille"}));
+  terminalCommand
+      ->add_option("--color", terminalBench.colour, "the viewer's --color (default: auto)")
+      ->check(CLI::IsMember({"none", "256", "truecolor", "auto"}));
+  std::string linkText;
+  terminalCommand
+      ->add_option("--link", linkText,
+                   "a slow link between viewer and terminal, RATE:DELAY (e.g. 256kbit:50ms, "
+                   "1mbit:50ms; delay each way): settle, stop and quit times instead")
+      ->check([](const std::string& text) {
+        return termshade::ParseLinkSpec(text) ? "" : "not RATE:DELAY, e.g. 256kbit:50ms";
+      });
+  terminalCommand->add_flag("!--no-answer", terminalBench.answer,
+                            "play a terminal that never answers the viewer's DA1 requests");
+  terminalCommand->add_option("--viewer", terminalBench.viewerPath,
+                              "the termshade program to measure (default: this one; another "
+                              "build, to compare)");
 
   termshade::MethodsBenchOptions methodsBench;
   CLI::App* methodsCommand = benchCommand->add_subcommand(
@@ -473,7 +492,8 @@ int Run(int argc, char** argv) {
         return 1;
       }
     }
-    terminalBench.viewerPath = SelfPath();
+    if (terminalBench.viewerPath.empty()) terminalBench.viewerPath = SelfPath();
+    if (!linkText.empty()) terminalBench.link = termshade::ParseLinkSpec(linkText);
     return termshade::RunTerminalBench(terminalBench);
   }
   if (modelsCommand->parsed()) return termshade::RunModelsBench(modelsBench);

@@ -7,6 +7,9 @@ constexpr int kEscape = 27;
 // Digits a number of a report may have (cells and codes are far smaller;
 // more is not a report).
 constexpr int kMaxDigits = 5;
+// Bytes a DA1 answer's parameters may take (xterm's, the longest known, has 24:
+// 64;1;2;6;9;15;16;17;18;21;22;28).
+constexpr int kMaxAnswerBytes = 64;
 
 // The report's kind from xterm's button code: + 32 motion, + 64 wheel, the
 // low two bits the button (3: released, in X10).
@@ -42,8 +45,9 @@ int InputDecoder::Read(bool await) {
 std::optional<InputEvent> InputDecoder::Next() {
   const int key = Read();
   if (key == kNoInput) return std::nullopt;
-  if (key != kEscape) return InputEvent{key, std::nullopt};
-  // ESC [ < ... (SGR) or ESC [ M ... (X10); else the keys as they came.
+  if (key != kEscape) return InputEvent{key, std::nullopt, false};
+  // ESC [ < ... (SGR), ESC [ M ... (X10) or ESC [ ? ... c (a DA1 answer);
+  // else the keys as they came.
   std::deque<int> consumed;
   auto give = [&](int k) {
     consumed.push_back(k);
@@ -54,13 +58,14 @@ std::optional<InputEvent> InputDecoder::Next() {
     const int kind = give(Read(true));
     if (kind == '<') report = SgrReport(consumed);
     if (kind == 'M') report = X10Report(consumed);
+    if (kind == '?' && DeviceAnswer(consumed)) return InputEvent{kNoInput, std::nullopt, true};
   }
-  if (report) return InputEvent{kNoInput, report};
+  if (report) return InputEvent{kNoInput, report, false};
   // Not a report: ESC alone, and what followed read again (kNoInput dropped).
   for (auto it = consumed.rbegin(); it != consumed.rend(); ++it) {
     if (*it != kNoInput) pending_.push_front(*it);
   }
-  return InputEvent{kEscape, std::nullopt};
+  return InputEvent{kEscape, std::nullopt, false};
 }
 
 // code ; col ; row then M (press, motion) or m (release); 1-based cells.
@@ -98,6 +103,24 @@ std::optional<MouseReport> InputDecoder::X10Report(std::deque<int>& consumed) {
   }
   if (bytes[1] < 33 || bytes[2] < 33) return std::nullopt;
   return FromCode(bytes[0] - 32, bytes[1] - 33, bytes[2] - 33, false);
+}
+
+// Parameters (digits and ';', at least one digit) then c. No key sends
+// ESC [ ?, so the rest is waited for as a report's is.
+bool InputDecoder::DeviceAnswer(std::deque<int>& consumed) {
+  bool digit = false;
+  for (int length = 0; length <= kMaxAnswerBytes; ++length) {
+    const int key = Read(true);
+    consumed.push_back(key);
+    if (key >= '0' && key <= '9') {
+      digit = true;
+    } else if (key == 'c') {
+      return digit;
+    } else if (key != ';') {
+      return false;
+    }
+  }
+  return false;
 }
 
 }  // namespace termshade

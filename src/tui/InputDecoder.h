@@ -20,13 +20,18 @@ struct MouseReport {
   int row = 0;
 };
 
-/// A key (ncurses key code) or a mouse report.
+/// A key (ncurses key code), a mouse report, or the terminal's answer to a
+/// primary device attributes request (DA1, ESC [ c): ESC [ ? digits and ; c.
+/// A terminal answers in order, once it has read every byte sent before the
+/// request, so the answer says a frame has reached the screen (FramePacer).
 struct InputEvent {
   int key = kNoInput;
   std::optional<MouseReport> mouse;
+  bool deviceAnswer = false;  ///< a DA1 answer (key kNoInput, no mouse)
 };
 
-/// Turns the keys ncurses passes on into keys and mouse reports. The viewer
+/// Turns the keys ncurses passes on into keys, mouse reports and DA1
+/// answers. The viewer
 /// decodes mouse reports itself: ncurses queues a burst of reports (press,
 /// motion and release read at once, as over SSH or while a frame is drawn)
 /// but hands out only the last, so a drag whose press came in one burst with
@@ -45,6 +50,7 @@ class InputDecoder {
   int Read(bool await = false);
   std::optional<MouseReport> SgrReport(std::deque<int>& consumed);
   std::optional<MouseReport> X10Report(std::deque<int>& consumed);
+  bool DeviceAnswer(std::deque<int>& consumed);
 
   std::function<int()> nextKey_;
   std::function<int()> awaitKey_;

@@ -159,6 +159,11 @@ int TerminalSession::NextKeyWithin(int milliseconds) {
   wtimeout(pad, 0);
   return key;
 }
+int TerminalSession::OutputQueuedBytes() {
+  int queued = 0;
+  return ioctl(STDOUT_FILENO, TIOCOUTQ, &queued) == 0 ? queued : 0;
+}
+
 int TerminalSession::WidthCells() {
   return COLS;
 }

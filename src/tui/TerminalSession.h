@@ -36,6 +36,9 @@ class TerminalSession {
   int NextKey();
   /// NextKey, waiting up to `milliseconds` for one.
   int NextKeyWithin(int milliseconds);
+  /// Bytes written to the terminal and not yet taken by the other end
+  /// (TIOCOUTQ: a terminal emulator, or sshd, still to read them); 0 if unknown.
+  static int OutputQueuedBytes();
   static int WidthCells();
   static int HeightCells();
   /// The read end of the signal pipe: readable once a handled signal arrived.

@@ -93,7 +93,8 @@ void TerminalWriter::AppendAttributes(const Attributes& wanted) {
   current_ = wanted;
 }
 
-void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int, int>> cursor) {
+void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int, int>> cursor,
+                             std::string_view trailer) {
   out_.clear();
   const bool full = !valid_ || previous_.WidthCells() != grid.WidthCells() ||
                     previous_.HeightCells() != grid.HeightCells();
@@ -165,9 +166,15 @@ void TerminalWriter::Present(const ScreenGrid& grid, std::optional<std::pair<int
     AppendCapability(out_, "cnorm");
     cursorShown_ = true;
   }
+  out_ += trailer;
   WriteAll();
   previous_ = grid;
   valid_ = true;
+}
+
+void TerminalWriter::Send(std::string_view bytes) {
+  out_.assign(bytes);
+  WriteAll();
 }
 
 bool TerminalWriter::BottomRightWritable() {

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "tui/ScreenGrid.h"
@@ -21,8 +22,12 @@ class TerminalWriter {
   TerminalWriter(const TerminalWriter&) = delete;
   TerminalWriter& operator=(const TerminalWriter&) = delete;
 
-  /// Shows grid; cursor is (col, row) to show the cursor there, or nothing to hide it.
-  void Present(const ScreenGrid& grid, std::optional<std::pair<int, int>> cursor);
+  /// Shows grid; cursor is (col, row) to show the cursor there, or nothing to
+  /// hide it; trailer goes out after the frame in the same write (FramePacer's request).
+  void Present(const ScreenGrid& grid, std::optional<std::pair<int, int>> cursor,
+               std::string_view trailer = {});
+  /// Sends bytes as they are, in one write.
+  void Send(std::string_view bytes);
   /// False when writing the bottom-right cell would scroll the screen
   /// (automatic margins without deferred wrap): Present leaves it alone.
   static bool BottomRightWritable();

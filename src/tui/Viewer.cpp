@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <clocale>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
+#include "tui/FramePacer.h"
 #include "tui/InputDecoder.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
@@ -40,6 +42,13 @@ using Clock = std::chrono::steady_clock;
 constexpr int kMinCols = 20;
 constexpr int kMinRows = 4;
 constexpr auto kTurntablePeriod = std::chrono::milliseconds(40);  // at most 25 frames a second
+// A terminal that does not answer: how often its output queue is looked at.
+constexpr int kOutputQueuePollMs = 10;
+// How long answers still in flight are waited for, and read, before the
+// terminal goes back to the shell (at q, or Ctrl-Z): else they would reach
+// the shell as typed text.
+constexpr auto kQuitAnswerWait = std::chrono::milliseconds(3000);
+constexpr auto kSuspendAnswerWait = std::chrono::milliseconds(1000);
 constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is looked at
 // How long the rest of a mouse report that has begun may take to arrive.
 constexpr int kReportRestMs = 50;
@@ -105,22 +114,35 @@ class EventLoop {
 
   LoopOutcome Run() {
     LoopOutcome outcome;
-    auto nextTurntableFrame = Clock::now();
+    // Ahead of the first frame's bytes: whether the terminal answers is
+    // known within a round trip, however slow the link.
+    writer_.Send(FramePacer::kRequest);
+    pacer_.RequestSent(Clock::now(), 0);
     while (!state_.QuitRequested() && !state_.StartError()) {
       StartRequestedLoad();
-      if (dirty_) Draw();
+      if (dirty_ && MayDraw()) {
+        TurnTurntable();
+        Draw();
+      }
       UpdateDetailJob();
       UpdateHierarchyJob();
-      // Step 1: sleep until input, a signal, a finished load, or the next
-      // turntable frame (or a look at the load's progress).
+      // Step 1: sleep until input (the terminal's answer among it), a
+      // signal, a finished load, the next turntable frame, a timeout of the
+      // answer, or a look at the load's progress.
       int timeoutMs = -1;
-      if (state_.Turntable()) {
-        const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(nextTurntableFrame -
-                                                                                Clock::now());
-        timeoutMs = static_cast<int>(std::max<long long>(0, wait.count()));
+      const auto wakeWithin = [&timeoutMs](int ms) {
+        if (ms >= 0) timeoutMs = timeoutMs < 0 ? ms : std::min(timeoutMs, ms);
+      };
+      const auto now = Clock::now();
+      if (dirty_) {  // a frame waits for the terminal
+        wakeWithin(pacer_.WakeMs(now));
+        if (!pacer_.Answering()) wakeWithin(kOutputQueuePollMs);
+      } else if (state_.Turntable()) {
+        const auto wait =
+            std::chrono::ceil<std::chrono::milliseconds>(nextTurntableFrame_ - now).count();
+        wakeWithin(static_cast<int>(std::max<long long>(0, wait)));
       }
-      if (job_)
-        timeoutMs = timeoutMs < 0 ? kLoadProgressPollMs : std::min(timeoutMs, kLoadProgressPollMs);
+      if (job_) wakeWithin(kLoadProgressPollMs);
       pollfd fds[5] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
                        {job_ ? job_->ReadyFd() : -1, POLLIN, 0},
@@ -132,20 +154,23 @@ class EventLoop {
         break;
       }
       if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
-      // Step 2: every key that queued up while drawing, applied before one redraw.
+      // Step 2: every key that queued up while drawing or waiting for the
+      // terminal, applied before one redraw: the next frame shows the newest view.
       for (auto event = input_.Next(); event; event = input_.Next()) HandleInput(*event);
+      if (state_.Turntable() != turning_) {  // space: turning starts (or stops) now
+        turning_ = state_.Turntable();
+        lastTurn_ = Clock::now();
+        nextTurntableFrame_ = lastTurn_;
+      }
       // Step 3: a finished load, or news of one still running.
       if (job_ && job_->Finished()) FinishLoad();
       if (job_ && LoadingText() != shownLoadingText_) dirty_ = true;
       UpdateDetailJob();
       UpdateHierarchyJob();
-      // Step 4: the turntable, at a capped rate.
-      if (state_.Turntable() && Clock::now() >= nextTurntableFrame) {
-        state_.TurntableStep();
-        dirty_ = true;
-        nextTurntableFrame = std::max(nextTurntableFrame + kTurntablePeriod, Clock::now());
-      }
+      // Step 4: the turntable, at a capped rate (turned when the frame is drawn).
+      if (state_.Turntable() && Clock::now() >= nextTurntableFrame_) dirty_ = true;
     }
+    AwaitAnswers(kQuitAnswerWait);
     // A worker still loading is asked to stop, and left to end alone if it runs on.
     outcome.abandonedLoad = abandonedLoad_ || (job_ && !job_->Stop()) ||
                             (detailJob_ && !detailJob_->Finished()) ||
@@ -158,6 +183,46 @@ class EventLoop {
   }
 
  private:
+  // Whether a frame may go out now: the terminal has answered for the last
+  // one (FramePacer); one that does not answer has taken all that was sent.
+  bool MayDraw() {
+    if (!pacer_.MayDraw(Clock::now())) return false;
+    return pacer_.Answering() || TerminalSession::OutputQueuedBytes() == 0;
+  }
+
+  // The turntable turns by the time since its last frame: as fast on a slow
+  // link, with fewer frames.
+  void TurnTurntable() {
+    if (!turning_) return;
+    const auto now = Clock::now();
+    state_.TurntableAdvance(std::chrono::duration<double>(now - lastTurn_).count());
+    lastTurn_ = now;
+    nextTurntableFrame_ = std::max(nextTurntableFrame_ + kTurntablePeriod, now);
+  }
+
+  // The frame in grid_, then the request for the terminal's answer, in one write.
+  void Present(std::optional<std::pair<int, int>> cursor) {
+    writer_.Present(grid_, cursor, FramePacer::kRequest);
+    pacer_.RequestSent(Clock::now(), writer_.LastFrameBytes());
+  }
+
+  // Reads the answers still in flight (for up to `limit`), before the shell
+  // gets the terminal: keys read meanwhile are dropped.
+  void AwaitAnswers(std::chrono::milliseconds limit) {
+    if (!pacer_.Answering()) return;
+    const auto deadline = Clock::now() + limit;
+    while (pacer_.RequestsInFlight() > 0) {
+      const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+      if (left.count() <= 0) return;
+      pollfd fd{STDIN_FILENO, POLLIN, 0};
+      if (poll(&fd, 1, static_cast<int>(left.count())) < 0 && errno != EINTR) return;
+      if ((fd.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) return;  // terminal gone
+      for (auto event = input_.Next(); event; event = input_.Next()) {
+        if (event->deviceAnswer) pacer_.AnswerRead(Clock::now());
+      }
+    }
+  }
+
   // Starts the load the state asked for, unless one is running already.
   void StartRequestedLoad() {
     if (job_) return;
@@ -272,6 +337,7 @@ class EventLoop {
   int HandleSignals() {
     TerminalSession::Signals signals = session_.TakeSignals();
     if (signals.suspend) {
+      AwaitAnswers(kSuspendAnswerWait);
       writer_.Release();
       session_.Suspend();
       if (signals.terminate == 0) signals.terminate = session_.TakeSignals().terminate;
@@ -285,6 +351,10 @@ class EventLoop {
   }
 
   void HandleInput(const InputEvent& event) {
+    if (event.deviceAnswer) {
+      pacer_.AnswerRead(Clock::now());
+      return;
+    }
     if (!event.mouse) {
       HandleKey(event.key);
       return;
@@ -434,7 +504,7 @@ class EventLoop {
     const int levelCount = state_.Render().ramp.LevelCount();
     if (cols < kMinCols || rows < kMinRows) {
       painter_.PaintTooSmall(grid_);
-      writer_.Present(grid_, std::nullopt);
+      Present(std::nullopt);
       return;
     }
     if (!state_.HasModel()) {  // the first model is loading: only the status line
@@ -444,7 +514,7 @@ class EventLoop {
           ComposeStatusLine({{shownLoadingText_, 0, false, Elision::kMiddle}, {"? help", 1, true}},
                             StatusCols(cols)),
           grid_);
-      writer_.Present(grid_, std::nullopt);
+      Present(std::nullopt);
       return;
     }
     // Step 1: the frame, through the one shared pipeline.
@@ -480,7 +550,7 @@ class EventLoop {
     } else {
       painter_.PaintStatus(StatusText(stats, pick, frameMs, StatusCols(cols)), grid_);
     }
-    writer_.Present(grid_, cursor);
+    Present(cursor);
   }
 
   // The status line: what is loading, a message or the model, then the
@@ -529,6 +599,10 @@ class EventLoop {
   TerminalSession& session_;
   ScreenPainter painter_;
   TerminalWriter writer_;
+  FramePacer pacer_;
+  bool turning_ = false;                  ///< the turntable was on at the last look
+  Clock::time_point lastTurn_;            ///< when the turntable last turned
+  Clock::time_point nextTurntableFrame_;  ///< its next frame is due
   ScreenGrid grid_;
   Renderer renderer_;
   RenderOptions frameOptions_;  ///< the state's options with the screen's colours

@@ -276,8 +276,8 @@ void ViewerState::Drag(int deltaCols, int deltaRows) {
   Orbit(-kOrbitStepRadians * deltaCols, -0.5 * kOrbitStepRadians * deltaRows * cellAspect_);
 }
 
-void ViewerState::TurntableStep() {
-  view_.theta = WrapRadians(view_.theta + kTurntableStepRadians);
+void ViewerState::TurntableAdvance(double seconds) {
+  view_.theta = WrapRadians(view_.theta + kTurntableRadiansPerSecond * seconds);
 }
 
 Camera ViewerState::CameraFor(int widthCells, int heightCells) const {

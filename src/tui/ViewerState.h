@@ -65,8 +65,9 @@ class ViewerState {
   /// Mouse drag by whole cells: orbit like the arrow keys, one step per cell across
   /// (half a step per cell down, cells being twice as tall).
   void Drag(int deltaCols, int deltaRows);
-  /// One turntable frame: theta advances by kTurntableStepRadians.
-  void TurntableStep();
+  /// The turntable, `seconds` on: theta advances by kTurntableRadiansPerSecond
+  /// a second (wall-clock time: a slow link gets fewer frames, not a slower turn).
+  void TurntableAdvance(double seconds);
 
   Camera CameraFor(int widthCells, int heightCells) const;
   const Scene& CurrentScene() const { return *scene_; }
@@ -111,7 +112,7 @@ class ViewerState {
   void SetMessage(std::string message) { message_ = std::move(message); }
 
   static constexpr double kOrbitStepRadians = 0.1;
-  static constexpr double kTurntableStepRadians = 0.04;
+  static constexpr double kTurntableRadiansPerSecond = 1.0;
   static constexpr double kAspectStep = 0.05;
 
  private:

@@ -3,8 +3,8 @@
 // now" (the rest arrives later: a report split between reads); 0xFD 0xNN for
 // a key above a byte (ncurses' KEY_ codes, 256 + NN). Decoding must end,
 // read all input, give keys in the order given (none invented; none
-// dropped when no report was found), and give reports only of 6 bytes or
-// more, with cells in range.
+// dropped when no report or answer was found), and give mouse reports only
+// of 6 bytes or more, with cells in range, and DA1 answers of 5 or more.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -59,10 +59,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   InputDecoder decoder(next, await);
   std::vector<int> keys;
   size_t reports = 0;
+  size_t answers = 0;
   // Every gap may end a Next() with nullopt; the loop ends once the script is read.
   for (size_t rounds = 0; rounds <= size + 1; ++rounds) {
     while (auto event = decoder.Next()) {
-      if (event->mouse) {
+      if (event->deviceAnswer) {
+        if (event->mouse || event->key != kNoInput) std::abort();
+        ++answers;
+      } else if (event->mouse) {
         ++reports;
         const MouseReport& m = *event->mouse;
         if (m.col < 0 || m.row < 0 || m.col >= 100000 || m.row >= 100000) std::abort();
@@ -73,15 +77,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (script.keys.empty()) break;
   }
   if (!script.keys.empty() || given.size() != script.realKeys) std::abort();  // input left unread
-  // Keys come out in the order given, a report takes at least 6 keys, and
-  // without reports every key comes out.
+  // Keys come out in the order given, a report takes at least 6 keys, an
+  // answer 5 (ESC [ ? 6 c), and without either every key comes out.
   size_t at = 0;
   for (const int key : keys) {
     while (at < given.size() && given[at] != key) ++at;
     if (at == given.size()) std::abort();  // a key not given, or out of order
     ++at;
   }
-  if (keys.size() + 6 * reports > given.size()) std::abort();
-  if (reports == 0 && keys.size() != given.size()) std::abort();
+  if (keys.size() + 6 * reports + 5 * answers > given.size()) std::abort();
+  if (reports == 0 && answers == 0 && keys.size() != given.size()) std::abort();
   return 0;
 }
