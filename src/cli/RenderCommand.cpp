@@ -1,9 +1,11 @@
 #include "cli/RenderCommand.h"
 
+#include <langinfo.h>
 #include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <clocale>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -30,6 +32,17 @@ namespace {
 // by rays save (render of the 2M sphere as PLY, 30 / 60 / 100 frames: 0.3 s
 // slower, 0.35 s slower, the same wall time).
 constexpr int kHierarchyFromFrames = 100;
+
+// --glyphs auto: what the viewer picks for this terminal (TERM, TERM_PROGRAM,
+// the locale's UTF-8), given whether the frames carry colour.
+GlyphMode AutoGlyphs(bool colour) {
+  std::setlocale(LC_CTYPE, "");
+  const bool utf8 = std::string_view(nl_langinfo(CODESET)) == "UTF-8";
+  const char* term = std::getenv("TERM");
+  const char* termProgram = std::getenv("TERM_PROGRAM");
+  return PickGlyphMode(utf8, colour, term != nullptr ? term : "",
+                       termProgram != nullptr ? termProgram : "");
+}
 
 int UsageError(const std::string& message) {
   std::cerr << "termshade render: " << message << "\n";
@@ -139,9 +152,10 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   if (!method) return UsageError("--method must be zbuffer, painter, cull, wire or auto");
   const auto shade = ParseShadeMode(options.shade);
   if (!shade) return UsageError("--shade must be contrast or lambert");
-  const auto glyphs = ParseGlyphMode(options.glyphs);
+  const auto glyphs =
+      options.glyphs == "auto" ? std::optional(GlyphMode::kRamp) : ParseGlyphMode(options.glyphs);
   if (!glyphs)
-    return UsageError("--glyphs must be ramp, ascii, blocks, quadrants, sextants or braille");
+    return UsageError("--glyphs must be ramp, ascii, blocks, quadrants, sextants, braille or auto");
   const auto detail = ParseDetailMode(options.lod.empty() ? "off" : options.lod);
   if (!detail) return UsageError("--lod must be auto or off");
   const auto format = ParseFrameFormat(options.format);
@@ -192,10 +206,13 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.method = *method;
   renderOptions.shade = *shade;
   renderOptions.ramp = ShadeRamp(options.ramp);
-  renderOptions.glyphs = *glyphs;
   // Text and json have no colours; ansi and the pictures made from it do.
   renderOptions.twoColour = *format == FrameFormat::kAnsi || *format == FrameFormat::kSvg ||
                             *format == FrameFormat::kAsciicast;
+  renderOptions.glyphs = options.glyphs == "auto"
+                             ? AutoGlyphs(renderOptions.twoColour &&
+                                          ResolveColourMode(*colourMode) != ColourMode::kNone)
+                             : *glyphs;
   renderOptions.cullBackFaces = !options.noCull;
   renderOptions.threads = options.threads;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
@@ -228,9 +245,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     std::optional<DetailLevels> levels;
     if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));
     if (const auto problem = openOutput()) return outputFailed(*problem);
-    if (const auto problem = WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions,
-                                         *format, ResolveColourMode(*colourMode), *background,
-                                         sink)) {
+    if (const auto problem =
+            WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions, *format,
+                        ResolveColourMode(*colourMode), *background, sink)) {
       return outputFailed(*problem);
     }
   }

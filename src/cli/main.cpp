@@ -184,9 +184,10 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
                      "(default .:-=+*#%@; block elements, box drawing, braille and Latin-1 too)");
   command
       .add_option("--glyphs", options.glyphs,
-                  "ramp, ascii (shape-matched), blocks, quadrants, sextants or braille "
-                  "(render: default ramp; viewer: picked for the terminal; g cycles)")
-      ->check(CLI::IsMember({"ramp", "ascii", "blocks", "quadrants", "sextants", "braille"}));
+                  "ramp, ascii (shape-matched), blocks, quadrants, sextants, braille, or auto "
+                  "(picked for the terminal: the viewer's default; render's is ramp; g cycles)")
+      ->check(
+          CLI::IsMember({"ramp", "ascii", "blocks", "quadrants", "sextants", "braille", "auto"}));
   command.add_flag("--no-cull", options.noCull,
                    "draw back faces too (shaded from their back side)");
   command
@@ -230,7 +231,8 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.render.ramp = termshade::ShadeRamp(look.ramp);
   viewer.render.cullBackFaces = !look.noCull;
   viewer.render.threads = look.threads;
-  if (!look.glyphs.empty()) viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
+  if (!look.glyphs.empty() && look.glyphs != "auto")
+    viewer.glyphs = termshade::ParseGlyphMode(look.glyphs);
   viewer.upAxis = look.upAxis;
   viewer.loadLimits = look.loadLimits;
   viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
