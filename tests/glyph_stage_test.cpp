@@ -101,14 +101,15 @@ TEST(GlyphStage, EqualsTheReferenceStageOnRandomSampleFrames) {
                                                : random() % 256);
       }
       const SampleFrame frame = RandomFrame(FrameSampleGrid(options), seed, kFaces);
-      const GlyphStage::Samples samples{frame, intensities, PatternSampleGrid(options),
-                                        seed % 2 == 0};
+      const GlyphStage::Samples samples{frame, intensities};
+      GlyphPlan plan = PlanGlyphs(options);
+      plan.writeDepth = seed % 2 == 0;
       CellBuffer expected(kCols, kRows), actual(kCols, kRows);
       DepthBuffer expectedDepth, actualDepth;
       expectedDepth.Resize(kCols, kRows);
       actualDepth.Resize(kCols, kRows);
-      reference.Compose(samples, options, expected, expectedDepth);
-      fast.Compose(samples, options, actual, actualDepth);
+      reference.Compose(samples, plan, expected, expectedDepth);
+      fast.Compose(samples, plan, actual, actualDepth);
       ExpectSameCells(expected, actual, expectedDepth, actualDepth,
                       std::string(GlyphModeName(options.glyphs)) +
                           (options.twoColour ? " colour" : " mono") + " seed " +
@@ -207,8 +208,7 @@ TEST(GlyphStage, EqualsTheReferenceStageOnTheShippedScenes) {
       frame.Begin(61, 23, grid);
       frame.CopyFrom(fine, &fineDepth);
       ReferenceGlyphStage reference;
-      reference.Compose({frame, intensities, PatternSampleGrid(options), options.keepDepth},
-                        options, expected, expectedDepth);
+      reference.Compose({frame, intensities}, PlanGlyphs(options), expected, expectedDepth);
       ExpectSameCells(expected, actual, expectedDepth, depth,
                       std::string(name) + " " + std::string(GlyphModeName(options.glyphs)) +
                           (options.twoColour ? " colour" : " mono"));

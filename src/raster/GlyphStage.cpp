@@ -233,27 +233,27 @@ void FillBackground(CellBuffer& cells) {
 
 // The glyph and tones of a cell whose samples (or parts) show more than one face.
 template <int N>
-char32_t MixedCell(const CellSamples& s, const RenderOptions& options, SamplePattern all,
+char32_t MixedCell(const CellSamples& s, const GlyphPlan& plan, SamplePattern all,
                    const std::array<int16_t, 256>& levelOf, AsciiMatcher& ascii, Tone& fore,
                    Tone& back) {
-  const GlyphMode mode = options.glyphs;
+  const GlyphMode mode = plan.mode;
   switch (mode) {
     case GlyphMode::kRamp:
       fore = ToneOf<N>(s, all);
-      return options.ramp.Glyph(levelOf[fore.intensity]);
+      return plan.ramp->Glyph(levelOf[fore.intensity]);
     case GlyphMode::kAscii:
       fore = ToneOf<N>(s, s.covered);
-      return options.twoColour ? ascii.MatchShape(s.values.data(), s.covered)
-                               : ascii.MatchInk(s.values.data(), s.covered);
+      return plan.twoColour ? ascii.MatchShape(s.values.data(), s.covered)
+                            : ascii.MatchInk(s.values.data(), s.covered);
     case GlyphMode::kBraille:
       fore = ToneOf<N>(s, s.covered);
       return PatternGlyph(mode, s.covered);
     default: {  // blocks, quadrants, sextants
       SamplePattern ink = s.covered;
-      if (options.twoColour) ink = BrighterHalf<N>(s);
+      if (plan.twoColour) ink = BrighterHalf<N>(s);
       if (ink == 0) ink = all;
       fore = ToneOf<N>(s, ink);
-      if (options.twoColour) back = ToneOf<N>(s, all & ~ink);
+      if (plan.twoColour) back = ToneOf<N>(s, all & ~ink);
       return PatternGlyph(mode, ink);
     }
   }
@@ -261,37 +261,38 @@ char32_t MixedCell(const CellSamples& s, const RenderOptions& options, SamplePat
 
 }  // namespace
 
-void GlyphStage::Compose(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+void GlyphStage::Compose(const Samples& in, const GlyphPlan& plan, CellBuffer& cells,
                          DepthBuffer& depth) {
-  if (in.writeDepth) depth.Clear();
-  if (options.glyphs == GlyphMode::kAscii) ascii_.Prepare(in.frame.Grid());
+  if (plan.writeDepth) depth.Clear();
+  if (plan.mode == GlyphMode::kAscii) ascii_.Prepare(in.frame.Grid());
   // The ramp level of each intensity: LevelFor depends on the level count alone.
-  if (levelCount_ != options.ramp.LevelCount()) {
-    levelCount_ = options.ramp.LevelCount();
+  if (levelCount_ != plan.ramp->LevelCount()) {
+    levelCount_ = plan.ramp->LevelCount();
     for (int i = 0; i < 256; ++i) {
-      levelOf_[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
+      levelOf_[i] = static_cast<int16_t>(plan.ramp->LevelFor(i / 255.0));
     }
   }
   uniformAscii_.fill(0);  // ascii glyphs of one-face cells, by intensity, filled as met
   FillBackground(cells);
   // The mode's own grids with their sizes known to the compiler; any other (forced) at run time.
   const SampleGrid g = in.frame.Grid();
-  if (g == SampleGrid{1, 2}) return ComposeGrid<1, 2>(in, options, cells, depth);
-  if (g == SampleGrid{2, 2}) return ComposeGrid<2, 2>(in, options, cells, depth);
-  if (g == SampleGrid{2, 3}) return ComposeGrid<2, 3>(in, options, cells, depth);
-  if (g == SampleGrid{2, 4}) return ComposeGrid<2, 4>(in, options, cells, depth);
-  ComposeGrid<0, 0>(in, options, cells, depth);
+  if (g == SampleGrid{1, 2}) return ComposeGrid<1, 2>(in, plan, cells, depth);
+  if (g == SampleGrid{2, 2}) return ComposeGrid<2, 2>(in, plan, cells, depth);
+  if (g == SampleGrid{2, 3}) return ComposeGrid<2, 3>(in, plan, cells, depth);
+  if (g == SampleGrid{2, 4}) return ComposeGrid<2, 4>(in, plan, cells, depth);
+  ComposeGrid<0, 0>(in, plan, cells, depth);
 }
 
 template <int kAcross, int kDown>
-void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
+void GlyphStage::ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffer& cells,
                              DepthBuffer& depth) {
   constexpr int kCount = kAcross * kDown;  // 0: at run time
   const SampleGrid grid = in.frame.Grid();
   const int count = kCount > 0 ? kCount : grid.Count();
-  const GlyphMode mode = options.glyphs;
-  const int partCount = in.pattern.Count();
-  const bool reduce = !(in.pattern == grid);
+  const GlyphMode mode = plan.mode;
+  const ShadeRamp& ramp = *plan.ramp;  // in a register: the byte stores below may alias the plan
+  const int partCount = plan.pattern.Count();
+  const bool reduce = !(plan.pattern == grid);
   const SamplePattern all = LowBits(partCount);
   const uint8_t* const faceIntensity = in.faceIntensities.data();
   CellSamples fine, parts;
@@ -313,7 +314,7 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
     }
     if (oneFace && firstFace == 0) continue;  // background, as filled
     fine.covered = covered;
-    if (in.writeDepth) {
+    if (plan.writeDepth) {
       const float* const sampleDepths = in.frame.Depths(index).data();
       float nearest = 0.0F;
       for (int n = 0; n < count; ++n) nearest = std::max(nearest, sampleDepths[n]);
@@ -326,13 +327,13 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
       fore = {firstFace, fine.values[0]};
       switch (mode) {
         case GlyphMode::kRamp:
-          glyph = options.ramp.Glyph(levelOf_[fore.intensity]);
+          glyph = ramp.Glyph(levelOf_[fore.intensity]);
           break;
         case GlyphMode::kAscii: {
           char32_t& known = uniformAscii_[fore.intensity];
           if (known == 0) {
-            known = options.twoColour ? ascii_.MatchShape(fine.values.data(), all)
-                                      : ascii_.MatchInk(fine.values.data(), all);
+            known = plan.twoColour ? ascii_.MatchShape(fine.values.data(), all)
+                                   : ascii_.MatchInk(fine.values.data(), all);
           }
           glyph = known;
           break;
@@ -342,23 +343,23 @@ void GlyphStage::ComposeGrid(const Samples& in, const RenderOptions& options, Ce
           break;
       }
     } else if (!reduce) {
-      glyph = MixedCell<kCount>(fine, options, all, levelOf_, ascii_, fore, back);
+      glyph = MixedCell<kCount>(fine, plan, all, levelOf_, ascii_, fore, back);
     } else {
       // The colour quadrants' (1x2 samples a part) and blocks' (2x2) parts unrolled.
-      if (kCount == 8 && in.pattern == SampleGrid{2, 2}) {
-        ReduceToParts<kCount, 1, 2>(fine, grid, in.pattern, parts);
-      } else if (kCount == 8 && in.pattern == SampleGrid{1, 2}) {
-        ReduceToParts<kCount, 2, 2>(fine, grid, in.pattern, parts);
+      if (kCount == 8 && plan.pattern == SampleGrid{2, 2}) {
+        ReduceToParts<kCount, 1, 2>(fine, grid, plan.pattern, parts);
+      } else if (kCount == 8 && plan.pattern == SampleGrid{1, 2}) {
+        ReduceToParts<kCount, 2, 2>(fine, grid, plan.pattern, parts);
       } else {
-        ReduceToParts<kCount, 0, 0>(fine, grid, in.pattern, parts);
+        ReduceToParts<kCount, 0, 0>(fine, grid, plan.pattern, parts);
       }
       // The colour blocks' and quadrants' parts; other forced grids at run time.
       if (parts.count == 2) {
-        glyph = MixedCell<2>(parts, options, all, levelOf_, ascii_, fore, back);
+        glyph = MixedCell<2>(parts, plan, all, levelOf_, ascii_, fore, back);
       } else if (parts.count == 4) {
-        glyph = MixedCell<4>(parts, options, all, levelOf_, ascii_, fore, back);
+        glyph = MixedCell<4>(parts, plan, all, levelOf_, ascii_, fore, back);
       } else {
-        glyph = MixedCell<0>(parts, options, all, levelOf_, ascii_, fore, back);
+        glyph = MixedCell<0>(parts, plan, all, levelOf_, ascii_, fore, back);
       }
     }
     cells.Glyphs()[index] = glyph;

@@ -6,7 +6,7 @@
 
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
-#include "raster/RenderOptions.h"
+#include "raster/FramePlan.h"
 #include "raster/SampleFrame.h"
 #include "shade/AsciiMatcher.h"
 
@@ -20,22 +20,20 @@ namespace termshade {
 /// samples show one face takes its tone without a split or a match.
 class GlyphStage {
  public:
-  /// A frame of samples (faces and depth per sample, the grid), the
-  /// intensity (0..255) of each face seen (indexed by face number - 1), and
-  /// whether depth is to be kept (then the cell's depth is its nearest sample's).
+  /// A frame of samples (faces and depth per sample, the grid) and the
+  /// intensity (0..255) of each face seen (indexed by face number - 1).
   struct Samples {
     const SampleFrame& frame;
     std::span<const uint8_t> faceIntensities;
-    SampleGrid pattern;  ///< the glyph's parts; the frame's grid is a multiple of it
-    bool writeDepth = true;
   };
-  void Compose(const Samples& samples, const RenderOptions& options, CellBuffer& cells,
+  /// Every cell's glyph by the plan (its mode, pattern and ramp); with
+  /// plan.writeDepth, the cell's depth is its nearest sample's.
+  void Compose(const Samples& samples, const GlyphPlan& plan, CellBuffer& cells,
                DepthBuffer& depth);
 
  private:
   template <int kAcross, int kDown>  // 0: the grid's size at run time
-  void ComposeGrid(const Samples& in, const RenderOptions& options, CellBuffer& cells,
-                   DepthBuffer& depth);
+  void ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffer& cells, DepthBuffer& depth);
 
   AsciiMatcher ascii_;
   int levelCount_ = 0;                  ///< the ramp's level count levelOf_ is for

@@ -48,18 +48,18 @@ void ForRanges(WorkerPool* pool, size_t count, const Job& job) {
 
 }  // namespace
 
-int ShadeStage::ShadeCells(const Scene& scene, const ShadeView& view, const RenderOptions& options,
+int ShadeStage::ShadeCells(const Scene& scene, const ShadeView& view, const ShadePlan& plan,
                            WorkerPool* pool, CellBuffer& cells) {
   const auto& faces = cells.FaceNumbers();
   BeginSeenFaces(scene.FaceCount());
   MarkSeenFaces(faces);
   WorkerPool* const split = seenFaces_.size() >= kSplitFrom ? pool : nullptr;
-  ShadeSeenFaces(scene, view, options, true, split);
+  ShadeSeenFaces(scene, view, plan, true, split);
   if (cells.FacesOnly()) {
     // Samples: the glyph stage reads FaceIntensities of the faces seen.
-  } else if (options.method != Method::kWire) {
+  } else if (!plan.lines) {
     ForRanges(split, faces.size(),
-              [&](int, size_t begin, size_t end) { ShadeCellRange(options, begin, end, cells); });
+              [&](int, size_t begin, size_t end) { ShadeCellRange(plan, begin, end, cells); });
   } else {
     auto& intensities = cells.Intensities();  // lines are drawn at full intensity
     for (size_t i = 0; i < intensities.size(); ++i) {
@@ -69,11 +69,11 @@ int ShadeStage::ShadeCells(const Scene& scene, const ShadeView& view, const Rend
   return EndSeenFaces();
 }
 
-int ShadeStage::ShadeSamples(const Scene& scene, const ShadeView& view,
-                             const RenderOptions& options, const SampleFrame& samples) {
+int ShadeStage::ShadeSamples(const Scene& scene, const ShadeView& view, const ShadePlan& plan,
+                             const SampleFrame& samples) {
   BeginSeenFaces(scene.FaceCount());
   ListSampledFaces(samples, scene.FaceCount());
-  ShadeSeenFaces(scene, view, options, false, nullptr);  // the glyph stage maps intensities
+  ShadeSeenFaces(scene, view, plan, false, nullptr);  // the glyph stage maps intensities
   return EndSeenFaces();
 }
 
@@ -131,12 +131,12 @@ void ShadeStage::ListSampledFaces(const SampleFrame& samples, size_t faceCount) 
 }
 
 // The intensity (and, with `levels`, the ramp level) of every seen face.
-void ShadeStage::ShadeSeenFaces(const Scene& scene, const ShadeView& view,
-                                const RenderOptions& options, bool levels, WorkerPool* pool) {
+void ShadeStage::ShadeSeenFaces(const Scene& scene, const ShadeView& view, const ShadePlan& plan,
+                                bool levels, WorkerPool* pool) {
   // Step 1: n.s per seen face, with n turned towards the eye, in world space;
   // each worker's least and greatest.
   const Mat4& m = view.eyeFromWorld;
-  const Vec3 s = options.sunEye;
+  const Vec3 s = plan.sunEye;
   const Vec3 sunWorld{m.At(0, 0) * s.x + m.At(1, 0) * s.y + m.At(2, 0) * s.z,
                       m.At(0, 1) * s.x + m.At(1, 1) * s.y + m.At(2, 1) * s.z,
                       m.At(0, 2) * s.x + m.At(1, 2) * s.y + m.At(2, 2) * s.z};
@@ -163,14 +163,15 @@ void ShadeStage::ShadeSeenFaces(const Scene& scene, const ShadeView& view,
     maxDot = std::max(maxDot, high);
   }
   // Step 2: levels and intensities per face.
+  const ShadeRamp& ramp = *plan.ramp;
   ForRanges(pool, count, [&](int, size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const double intensity =
-          options.shade == ShadeMode::kContrast
-              ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, options.ambient)
-              : LambertIntensity(seenSunDots_[i], options.ambient);
+          plan.mode == ShadeMode::kContrast
+              ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, plan.ambient)
+              : LambertIntensity(seenSunDots_[i], plan.ambient);
       if (levels) {
-        faceLevels_[seenFaces_[i]] = static_cast<int16_t>(options.ramp.LevelFor(intensity));
+        faceLevels_[seenFaces_[i]] = static_cast<int16_t>(ramp.LevelFor(intensity));
       }
       const double clamped = std::isnan(intensity) ? 0.0 : std::clamp(intensity, 0.0, 1.0);
       faceIntensities_[seenFaces_[i]] = static_cast<uint8_t>(std::lround(255.0 * clamped));
@@ -179,17 +180,18 @@ void ShadeStage::ShadeSeenFaces(const Scene& scene, const ShadeView& view,
 }
 
 // Cells [begin, end): level, intensity and ramp glyph of their face.
-void ShadeStage::ShadeCellRange(const RenderOptions& options, size_t begin, size_t end,
+void ShadeStage::ShadeCellRange(const ShadePlan& plan, size_t begin, size_t end,
                                 CellBuffer& cells) {
   const auto& faces = cells.FaceNumbers();
   auto& glyphs = cells.Glyphs();
   auto& levels = cells.Levels();
   auto& intensities = cells.Intensities();
+  const ShadeRamp& ramp = *plan.ramp;  // in a register: the byte stores below may alias the plan
   for (size_t i = begin; i < end; ++i) {
     if (faces[i] == 0) continue;
     levels[i] = faceLevels_[faces[i] - 1];
     intensities[i] = faceIntensities_[faces[i] - 1];
-    glyphs[i] = options.ramp.Glyph(levels[i]);
+    glyphs[i] = ramp.Glyph(levels[i]);
   }
 }
 

@@ -10,7 +10,7 @@
 #include "geometry/Scene.h"
 #include "geometry/Vec3.h"
 #include "raster/CellBuffer.h"
-#include "raster/RenderOptions.h"
+#include "raster/FramePlan.h"
 #include "raster/SampleFrame.h"
 #include "raster/WorkerPool.h"
 
@@ -31,11 +31,11 @@ class ShadeStage {
  public:
   /// A one-sample frame's cells: levels, intensities and ramp glyphs from
   /// their faces. Returns the number of distinct faces seen.
-  int ShadeCells(const Scene& scene, const ShadeView& view, const RenderOptions& options,
-                 WorkerPool* pool, CellBuffer& cells);
+  int ShadeCells(const Scene& scene, const ShadeView& view, const ShadePlan& plan, WorkerPool* pool,
+                 CellBuffer& cells);
   /// The faces a sample frame shows: their intensities (FaceIntensities) for
   /// the glyph stage. Returns the number of distinct faces seen.
-  int ShadeSamples(const Scene& scene, const ShadeView& view, const RenderOptions& options,
+  int ShadeSamples(const Scene& scene, const ShadeView& view, const ShadePlan& plan,
                    const SampleFrame& samples);
   /// Per face (face number - 1): the last frame's intensity, for the faces it showed.
   std::span<const uint8_t> FaceIntensities() const { return faceIntensities_; }
@@ -44,9 +44,9 @@ class ShadeStage {
   void BeginSeenFaces(size_t faceCount);
   void MarkSeenFaces(std::span<const uint32_t> faceNumbers);
   void ListSampledFaces(const SampleFrame& samples, size_t faceCount);
-  void ShadeSeenFaces(const Scene& scene, const ShadeView& view, const RenderOptions& options,
-                      bool levels, WorkerPool* pool);
-  void ShadeCellRange(const RenderOptions& options, size_t begin, size_t end, CellBuffer& cells);
+  void ShadeSeenFaces(const Scene& scene, const ShadeView& view, const ShadePlan& plan, bool levels,
+                      WorkerPool* pool);
+  void ShadeCellRange(const ShadePlan& plan, size_t begin, size_t end, CellBuffer& cells);
   int EndSeenFaces();
 
   std::vector<int16_t> faceLevels_;       ///< per face: ramp level; -1 between frames

@@ -166,21 +166,21 @@ std::array<uint8_t, 32> ShapeLevels(const CellSamples& s) {
 
 }  // namespace
 
-void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const RenderOptions& options,
+void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan& plan,
                                   CellBuffer& cells, DepthBuffer& depth) {
-  if (in.writeDepth) depth.Clear();
-  if (options.glyphs == GlyphMode::kAscii) ascii_.Prepare(in.frame.Grid());
+  if (plan.writeDepth) depth.Clear();
+  if (plan.mode == GlyphMode::kAscii) ascii_.Prepare(in.frame.Grid());
   const SampleGrid grid = in.frame.Grid();
   const int k = grid.across;
   const int m = grid.down;
-  const GlyphMode mode = options.glyphs;
-  const int partCount = in.pattern.Count();
-  const bool reduce = !(in.pattern == grid);
+  const GlyphMode mode = plan.mode;
+  const int partCount = plan.pattern.Count();
+  const bool reduce = !(plan.pattern == grid);
   const SamplePattern all =
       partCount >= 32 ? ~SamplePattern{0} : (SamplePattern{1} << partCount) - 1;
   // The ramp level of each intensity, once a frame.
   std::array<int16_t, 256> levelOf{};
-  for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(options.ramp.LevelFor(i / 255.0));
+  for (int i = 0; i < 256; ++i) levelOf[i] = static_cast<int16_t>(plan.ramp->LevelFor(i / 255.0));
   const uint8_t* const faceIntensity = in.faceIntensities.data();
   CellSamples fine, parts;
   fine.count = k * m;
@@ -212,9 +212,9 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const RenderOpt
       const uint32_t face = fine.faces[n];
       fine.values[n] = face == 0 ? 0 : faceIntensity[face - 1];
       fine.covered |= face != 0 ? SamplePattern{1} << n : 0;
-      if (in.writeDepth) nearest = std::max(nearest, in.frame.Depths(index)[n]);
+      if (plan.writeDepth) nearest = std::max(nearest, in.frame.Depths(index)[n]);
     }
-    if (reduce) ReduceToParts(fine, grid, in.pattern, parts);
+    if (reduce) ReduceToParts(fine, grid, plan.pattern, parts);
     const CellSamples& s = reduce ? parts : fine;
     // Step 2: the glyph and its colours.
     SamplePattern ink = s.covered;
@@ -223,12 +223,12 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const RenderOpt
     switch (mode) {
       case GlyphMode::kRamp: {
         fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, all);
-        glyph = options.ramp.Glyph(levelOf[fore.intensity]);
+        glyph = plan.ramp->Glyph(levelOf[fore.intensity]);
         break;
       }
       case GlyphMode::kAscii: {
         fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
-        glyph = ascii_.Nearest(options.twoColour ? ShapeLevels(s) : InkLevels(s));
+        glyph = ascii_.Nearest(plan.twoColour ? ShapeLevels(s) : InkLevels(s));
         break;
       }
       case GlyphMode::kBraille:
@@ -240,10 +240,10 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const RenderOpt
           ink = all;
           fore = {firstFace, s.values[0]};
         } else {
-          if (options.twoColour) ink = BrighterHalf(s);
+          if (plan.twoColour) ink = BrighterHalf(s);
           if (ink == 0) ink = all;
           fore = ToneOf(s, ink);
-          if (options.twoColour) back = ToneOf(s, all & ~ink);
+          if (plan.twoColour) back = ToneOf(s, all & ~ink);
         }
         glyph = PatternGlyph(mode, ink);
         break;
@@ -253,7 +253,7 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const RenderOpt
             cells.Intensities()[index]);
     SetTone(back, levelOf, cells.BackFaceNumbers()[index], cells.BackLevels()[index],
             cells.BackIntensities()[index]);
-    if (in.writeDepth) depth.At(index) = nearest;
+    if (plan.writeDepth) depth.At(index) = nearest;
   }
 }
 

@@ -2,8 +2,8 @@
 
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
+#include "raster/FramePlan.h"
 #include "raster/GlyphStage.h"
-#include "raster/RenderOptions.h"
 #include "shade/AsciiMatcher.h"
 
 namespace termshade {
@@ -13,7 +13,7 @@ namespace termshade {
 /// GlyphStage is compared with, cell by cell.
 class ReferenceGlyphStage {
  public:
-  void Compose(const GlyphStage::Samples& samples, const RenderOptions& options, CellBuffer& cells,
+  void Compose(const GlyphStage::Samples& samples, const GlyphPlan& plan, CellBuffer& cells,
                DepthBuffer& depth);
 
  private:
