@@ -239,8 +239,8 @@ Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
     if (isatty(STDIN_FILENO) != 0) {
       return LoadError{"-", 0, 0, "standard input is a terminal; pipe a model into it"};
     }
-    Loaded<std::string> bytes =
-        ReadStream(STDIN_FILENO, "-", options.memoryBudgetBytes, options.cancel);
+    Loaded<std::string> bytes = ReadStream(
+        STDIN_FILENO, "-", LargestLoadableBytes(options.memoryBudgetBytes), options.cancel);
     if (!bytes.Ok()) return bytes.Error();
     return LoadBytes(FileBytes(std::move(bytes.Value())), ModelPlace{"-", "", ""}, options);
   }

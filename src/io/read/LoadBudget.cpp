@@ -212,6 +212,20 @@ size_t EstimateLeastLoadBytes(size_t fileBytes) {
   return std::min(EstimateImportBytes("dat", fileBytes), *EstimateOwnReaderBytes("stl", fileBytes));
 }
 
+size_t LargestLoadableBytes(size_t budgetBytes) {
+  size_t low = 0, high = budgetBytes;  // the least load of `low` bytes fits
+  if (EstimateLeastLoadBytes(0) > budgetBytes) return 0;
+  while (low < high) {
+    const size_t middle = low + (high - low + 1) / 2;
+    if (EstimateLeastLoadBytes(middle) <= budgetBytes) {
+      low = middle;
+    } else {
+      high = middle - 1;
+    }
+  }
+  return low;
+}
+
 size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces) {
   const auto v = static_cast<double>(vertices), c = static_cast<double>(corners),
              f = static_cast<double>(faces);
@@ -261,7 +275,9 @@ std::optional<size_t> ParseByteCount(std::string_view text) {
   }
   if (!suffix.empty()) return std::nullopt;
   const double bytes = value * scale;
-  if (bytes < 1 || bytes > 1e18) return std::nullopt;
+  // Past 64 TiB no budget means anything (x86-64 user space is 128 TiB).
+  constexpr double kMostBytes = 64.0 * 1099511627776.0;
+  if (bytes < 1 || bytes > kMostBytes) return std::nullopt;
   return static_cast<size_t>(bytes);
 }
 
