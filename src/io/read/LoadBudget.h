@@ -35,8 +35,15 @@ size_t EstimateMeshBytes(size_t vertices, size_t corners, size_t faces);
 
 /// Peak bytes reading a mesh of this size from fileBytes of file (held
 /// while it is read), preparing it and drawing its first frame take
-/// (PrepareScene's arrays, the renderer's buffers).
-size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces);
+/// (PrepareScene's arrays, the renderer's buffers); largestFaceCorners: the
+/// corners of its largest face, whose triangulation needs work arrays of
+/// its own (kTriangulateBytesPerCorner a corner).
+size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces,
+                             size_t largestFaceCorners = 3);
+
+/// Work bytes the triangulation of one face takes per corner (Triangulate.h:
+/// the corners' positions, kept list, projected points, links, triangles).
+inline constexpr double kTriangulateBytesPerCorner = 72;
 
 /// The message for a model that needs more memory than the budget allows.
 std::string OverBudgetMessage(double neededBytes, size_t budgetBytes);
