@@ -14,9 +14,10 @@ set -euo pipefail
 runtime=(cmake ninja-build g++ libncurses-dev libcli11-dev libassimp-dev libmeshoptimizer-dev)
 # GoogleTest, Google Benchmark, JSON for the dump tests; tmux and strace drive
 # the viewer; Assimp's own model corpus; man-db renders the installed man page;
-# zsh and fish check their completion scripts.
+# zsh and fish check their completion scripts; rsvg-convert and Pillow read
+# the SVG export back.
 test=(libgtest-dev libbenchmark-dev nlohmann-json3-dev tmux strace python3 assimp-testmodels
-      man-db zsh fish)
+      man-db zsh fish librsvg2-bin python3-pil)
 ci=(clang libclang-rt-14-dev)
 
 list=false

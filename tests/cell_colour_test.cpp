@@ -1,6 +1,7 @@
-// Cell colours (SPEC 10): face colour x intensity, the nearest visible entry
-// of the 256-colour cube or grey ramp, visible on dark and light themes, and
-// the same colours in the ansi dump as on the screen.
+// Cell colours (SPEC 10): face colour x intensity over the whole range the
+// terminal's background allows, the nearest entry of the 256-colour cube or
+// grey ramp that stays visible on it, and the same colours in the ansi dump
+// as on the screen.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -16,9 +17,9 @@ namespace {
 
 constexpr Srgb8 kBlack{0, 0, 0};
 constexpr Srgb8 kWhite{255, 255, 255};
-// The floor every shade keeps against a black (dark theme) and a white
-// (light theme) background, as a WCAG 2 contrast ratio.
-constexpr double kContrastFloor = 2.5;
+// The floor every shade keeps against its background, as a WCAG 2 contrast
+// ratio: kMinBackgroundContrast less what rounding to 8 bits may take.
+constexpr double kContrastFloor = kMinBackgroundContrast - 0.03;
 
 const std::vector<Rgb>& TestColours() {
   static const std::vector<Rgb> colours{
@@ -34,29 +35,49 @@ TEST(CellColour, ContrastRatioIsWcags) {
   EXPECT_NEAR(RelativeLuminance({128, 128, 128}), 0.2158, 1e-4);
 }
 
-TEST(CellColour, DarkestAndBrightestShadesStayVisibleOnDarkAndLightThemes) {
-  for (const Rgb& face : TestColours()) {
-    for (const ColourMode mode : {ColourMode::kTrueColour, ColourMode::k256}) {
-      for (const double intensity : {0.0, 0.25, 0.5, 0.75, 1.0}) {
-        const TermColour colour = CellColour(face, intensity, mode);
-        const Srgb8 shown =
-            mode == ColourMode::kTrueColour ? colour.rgb : Palette256Colour(colour.index);
-        EXPECT_GE(ContrastRatio(shown, kBlack), kContrastFloor)
-            << face.r << " " << face.g << " " << face.b << " at " << intensity;
-        EXPECT_GE(ContrastRatio(shown, kWhite), kContrastFloor)
-            << face.r << " " << face.g << " " << face.b << " at " << intensity;
+TEST(CellColour, EveryShadeStaysVisibleAgainstItsBackground) {
+  for (const Background background : {Background::kDark, Background::kLight}) {
+    const Srgb8 backgroundColour = background == Background::kDark ? kBlack : kWhite;
+    for (const Rgb& face : TestColours()) {
+      for (const ColourMode mode : {ColourMode::kTrueColour, ColourMode::k256}) {
+        for (const double intensity : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+          const TermColour colour = CellColour(face, intensity, mode, background);
+          const Srgb8 shown =
+              mode == ColourMode::kTrueColour ? colour.rgb : Palette256Colour(colour.index);
+          EXPECT_GE(ContrastRatio(shown, backgroundColour), kContrastFloor)
+              << BackgroundName(background) << " " << face.r << " " << face.g << " " << face.b
+              << " at " << intensity;
+        }
       }
     }
   }
 }
 
+TEST(CellColour, ShadesSpanFromNearTheBackgroundToTheFarEnd) {
+  // Dark: a white face is white when lit and close to black in shadow.
+  EXPECT_EQ(ShadedFaceColour({1, 1, 1}, 1.0, Background::kDark), (Srgb8{255, 255, 255}));
+  EXPECT_LE(RelativeLuminance(ShadedFaceColour({1, 1, 1}, 0.0, Background::kDark)), 0.09);
+  // Light: the lit side keeps its contrast against white; the shadow is close to black.
+  EXPECT_NEAR(RelativeLuminance(ShadedFaceColour({1, 1, 1}, 1.0, Background::kLight)),
+              kLightCeilingLuminance, 0.005);
+  EXPECT_LE(RelativeLuminance(ShadedFaceColour({1, 1, 1}, 0.0, Background::kLight)), 0.06);
+  // A dark face on a dark background is lifted to the floor, never lost.
+  EXPECT_NEAR(RelativeLuminance(ShadedFaceColour({0, 0, 0}, 0.0, Background::kDark)),
+              kDarkFloorLuminance, 0.003);
+  // The 256 colours span as far: white and near-black entries on a dark background.
+  EXPECT_EQ(CellColour({1, 1, 1}, 1.0, ColourMode::k256, Background::kDark).index, 231);
+  EXPECT_LE(RelativeLuminance(Palette256Colour(
+                CellColour({1, 1, 1}, 0.0, ColourMode::k256, Background::kDark).index)),
+            0.1);
+}
+
 TEST(CellColour, TruecolourIsFaceColourTimesIntensity) {
-  // A mid-grey face within the bounds: exactly face x (0.2 + 0.8 intensity), sRGB-encoded.
+  // A mid-grey face: exactly face x (0.08 + 0.92 intensity) in linear light, sRGB-encoded once.
   const Rgb face{0.3F, 0.3F, 0.3F};
   const Srgb8 full = ShadedFaceColour(face, 1.0);
   EXPECT_EQ(full, (Srgb8{149, 149, 149}));  // sRGB of linear 0.3
   const Srgb8 half = ShadedFaceColour(face, 0.5);
-  EXPECT_EQ(half, (Srgb8{118, 118, 118}));  // sRGB of linear 0.3 x 0.6 = 0.18
+  EXPECT_EQ(half, (Srgb8{112, 112, 112}));  // sRGB of linear 0.3 x 0.54 = 0.162
   // Hue is kept: a red face stays red, a yellow one yellow.
   const Srgb8 red = ShadedFaceColour({1, 0, 0}, 1.0);
   EXPECT_GT(red.r, 200);
@@ -82,7 +103,7 @@ TEST(CellColour, Nearest256IsACubeOrGreyEntry) {
   EXPECT_EQ(Palette256Colour(196), (Srgb8{255, 0, 0}));
   EXPECT_EQ(Palette256Colour(232), (Srgb8{8, 8, 8}));
   EXPECT_EQ(Palette256Colour(244), (Srgb8{128, 128, 128}));
-  // Exact palette colours within the bounds map to themselves.
+  // Exact palette colours visible on the background map to themselves.
   EXPECT_EQ(Nearest256Colour({128, 128, 128}), 244);
   EXPECT_EQ(Nearest256Colour({175, 95, 0}), 130);  // 16 + 36*3 + 6*1 + 0
   for (int r = 0; r < 256; r += 15) {
@@ -100,6 +121,19 @@ TEST(CellColour, NoneIsTheTerminalsDefault) {
   EXPECT_EQ(IntensityForLevel(0, 9), 0.0);
   EXPECT_EQ(IntensityForLevel(8, 9), 1.0);
   EXPECT_EQ(IntensityForLevel(0, 1), 1.0);
+}
+
+TEST(Background, ParsesAndReadsColorFgBg) {
+  EXPECT_EQ(ParseBackground("dark"), Background::kDark);
+  EXPECT_EQ(ParseBackground("light"), Background::kLight);
+  EXPECT_FALSE(ParseBackground("black").has_value());
+  EXPECT_EQ(BackgroundFromColorFgBg("15;0"), Background::kDark);
+  EXPECT_EQ(BackgroundFromColorFgBg("0;15"), Background::kLight);
+  EXPECT_EQ(BackgroundFromColorFgBg("0;default;7"), Background::kLight);
+  EXPECT_EQ(BackgroundFromColorFgBg("12;8"), Background::kDark);
+  EXPECT_FALSE(BackgroundFromColorFgBg("").has_value());
+  EXPECT_FALSE(BackgroundFromColorFgBg("15;default").has_value());
+  EXPECT_FALSE(BackgroundFromColorFgBg("15;99").has_value());
 }
 
 TEST(ColourMode, ParsesAndResolvesAuto) {

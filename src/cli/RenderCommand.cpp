@@ -15,8 +15,10 @@
 #include "geometry/RayBvh.h"
 #include "io/load/ModelExtensions.h"
 #include "io/load/ModelLoader.h"
+#include "io/write/AsciicastRecording.h"
 #include "io/write/FrameFormats.h"
 #include "io/write/OutputFile.h"
+#include "io/write/SvgFrame.h"
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
@@ -62,17 +64,32 @@ struct FrameSink {
   DepthBuffer centerDepth;
   CellBuffer centerCells;
   std::string text;
-  std::optional<OutputFile> file;  ///< unset: standard output
+  std::string ansi;                          ///< the ansi dump a picture is made from
+  std::optional<AsciicastRecording> record;  ///< --format asciicast: the recording
+  std::optional<OutputFile> file;            ///< unset: standard output
 };
 
 // What one frame becomes in the chosen format.
 void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& renderOptions,
-                 FrameFormat format, ColourMode colourMode, FrameSink& sink) {
+                 FrameFormat format, ColourMode colourMode, Background background,
+                 FrameSink& sink) {
   std::string& text = sink.text;
   if (format == FrameFormat::kText) AppendTextFrame(sink.cells, text);
   if (format == FrameFormat::kAnsi) {
     AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
-                    colourMode, text);
+                    colourMode, text, background);
+  }
+  if (format == FrameFormat::kSvg) {
+    const SvgFrameStyle style{camera.projection.cellAspect, colourMode, background,
+                              ThemeFor(background)};
+    AppendSvgFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(), style,
+                   text);
+  }
+  if (format == FrameFormat::kAsciicast) {
+    sink.ansi.clear();
+    AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
+                    colourMode, sink.ansi, background);
+    sink.record->AppendFrame(sink.ansi, text);
   }
   if (format != FrameFormat::kJson) return;
   if (sink.renderer.LastSampleGrid().Count() <= 1) {
@@ -94,7 +111,8 @@ void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& 
 std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* levels,
                                        const RenderCommandOptions& options,
                                        const RenderOptions& renderOptions, FrameFormat format,
-                                       ColourMode colourMode, FrameSink& sink) {
+                                       ColourMode colourMode, Background background,
+                                       FrameSink& sink) {
   ViewParams view = DefaultView(scene.diagonalModelUnits);
   view.theta = options.theta;
   view.phi = options.phi;
@@ -108,7 +126,7 @@ std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* l
     const Scene& drawn = *PickDetail(levels, scene, camera, renderOptions).scene;
     sink.renderer.Render(drawn, camera, renderOptions, sink.depth, sink.cells);
     sink.text.clear();
-    AppendFrame(drawn, camera, renderOptions, format, colourMode, sink);
+    AppendFrame(drawn, camera, renderOptions, format, colourMode, background, sink);
     // The first failed write ends the run (a closed pipe, a full disk).
     if (auto problem =
             sink.file ? sink.file->Write(sink.text) : WriteWhole(STDOUT_FILENO, sink.text)) {
@@ -132,13 +150,19 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   const auto detail = ParseDetailMode(options.lod.empty() ? "off" : options.lod);
   if (!detail) return UsageError("--lod must be auto or off");
   const auto format = ParseFrameFormat(options.format);
-  if (!format) return UsageError("--format must be text, ansi or json");
+  if (!format) return UsageError("--format must be text, ansi, json, svg or asciicast");
+  if (*format == FrameFormat::kSvg && options.frames * options.modelPaths.size() > 1)
+    return UsageError("--format svg draws one frame: one model and --frames 1");
+  if (!std::isfinite(options.framesPerSecond) || options.framesPerSecond <= 0.0)
+    return UsageError("--fps must be a positive number");
   if (const auto problem = ShadeRamp::Problem(options.ramp))
     return UsageError("--ramp: " + *problem);
   const auto colourMode = options.mono
                               ? std::optional(ColourMode::kNone)
                               : ParseColourMode(options.colour.empty() ? "256" : options.colour);
   if (!colourMode) return UsageError("--color must be none, 256, truecolor or auto");
+  const auto background = ParseBackground(options.background.empty() ? "dark" : options.background);
+  if (!background) return UsageError("--background must be dark or light");
   if (!std::isfinite(options.theta) || !std::isfinite(options.phi) ||
       !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {
     return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
@@ -172,8 +196,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   // file): a file replaced whole (never half-written), or stdout.
   FrameSink sink;
   const auto outputFailed = [&](const std::string& why) {
-    std::cerr << SanitizeForTerminal(options.outputPath) << ": " << SanitizeForTerminal(why)
-              << "\n";
+    std::cerr << (options.outputPath.empty() ? "termshade render: standard output"
+                                             : SanitizeForTerminal(options.outputPath))
+              << ": " << SanitizeForTerminal(why) << "\n";
     return 1;
   };
   bool opened = false;
@@ -197,7 +222,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.shade = *shade;
   renderOptions.ramp = ShadeRamp(options.ramp);
   renderOptions.glyphs = *glyphs;
-  renderOptions.twoColour = *format == FrameFormat::kAnsi;  // text and json have no colours
+  // Text and json have no colours; ansi and the pictures made from it do.
+  renderOptions.twoColour = *format == FrameFormat::kAnsi || *format == FrameFormat::kSvg ||
+                            *format == FrameFormat::kAsciicast;
   renderOptions.cullBackFaces = !options.noCull;
   renderOptions.threads = options.threads;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
@@ -206,6 +233,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   sink.cells.Resize(widthCells, heightCells);
   sink.centerDepth.Resize(widthCells, heightCells);
   sink.centerCells.Resize(widthCells, heightCells);
+  if (*format == FrameFormat::kAsciicast)
+    sink.record.emplace(widthCells, heightCells, options.framesPerSecond, ThemeFor(*background));
   LoadOptions loadOptions(options.loadLimits);
   loadOptions.formatHint = options.inputFormat;
   loadOptions.importerOnly = options.reader == "assimp";
@@ -228,17 +257,24 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     std::optional<DetailLevels> levels;
     if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));
     if (const auto problem = openOutput()) return outputFailed(*problem);
-    if (const auto problem = WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions,
-                                         *format, ResolveColourMode(*colourMode), sink)) {
-      if (!sink.file) {
-        std::cerr << "termshade render: standard output: " << SanitizeForTerminal(*problem) << "\n";
-        return 1;
-      }
+    if (const auto problem =
+            WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions, *format,
+                        ResolveColourMode(*colourMode), *background, sink)) {
       return outputFailed(*problem);
     }
   }
 
-  // Step 4: the file committed whole (stdout was written frame by frame).
+  // Step 4: a recording's closing event, then the file committed whole
+  // (stdout was written frame by frame).
+  if (sink.record) {
+    sink.text.clear();
+    sink.record->AppendEnd(sink.text);
+    if (const auto problem =
+            sink.file ? sink.file->Write(sink.text) : WriteWhole(STDOUT_FILENO, sink.text)) {
+      return outputFailed(*problem);
+    }
+  }
+
   if (sink.file) {
     if (const auto problem = sink.file->Commit()) return outputFailed(*problem);
   }

@@ -28,6 +28,7 @@ struct RenderCommandOptions {
   std::string outputPath;  ///< empty: stdout
   int frames = 1;
   double stepRadians = 0.1;
+  double framesPerSecond = 25.0;  ///< --fps: asciicast frames a second (the viewer's cap)
   bool noCull = false;
   int threads = 0;              ///< --threads: frame threads, 0 every core
   std::string inputFormat;      ///< --input-format: extension for content that cannot be sniffed
@@ -37,6 +38,9 @@ struct RenderCommandOptions {
   /// (render: 256, so dumps do not depend on the environment; viewer: auto).
   std::string colour;
   bool mono = false;             ///< --mono: --color none
+  /// --background dark|light: the terminal the colours are made for; render's
+  /// default is dark whatever the terminal, so dumps stay reproducible.
+  std::string background;  ///< empty: the command's default
   std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
   /// --lod auto|off; empty: the command's default (render: off, exact dumps; viewer: auto).
   std::string lod;

@@ -16,6 +16,7 @@
 #include "MethodsBench.h"
 #include "ModelsBench.h"
 #include "TerminalBench.h"
+#include "cli/ConfigFile.h"
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
 #include "cli/NumberChecks.h"
@@ -36,7 +37,7 @@ using termshade::RenderCommandOptions;
 
 // CLI11's own exit codes are not ours: help is 0, every usage error 2. Its
 // text quotes the command line, so it is escaped before reaching a terminal.
-int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
+int ParseOrExit(CLI::App& app, int argc, char** argv, const std::string& configPath, bool& done) {
   using termshade::SanitizeForTerminal;
   using termshade::SanitizeLinesForTerminal;
   try {
@@ -53,6 +54,11 @@ int ParseOrExit(CLI::App& app, int argc, char** argv, bool& done) {
     std::cout << SanitizeLinesForTerminal(version.what()) << "\n";
     done = true;
     return 0;
+  } catch (const CLI::ConfigError& e) {  // a key or section of the file
+    std::cerr << "termshade: " << SanitizeForTerminal(configPath) << ": "
+              << SanitizeLinesForTerminal(e.what()) << "\n";
+    done = true;
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "termshade: " << SanitizeLinesForTerminal(e.what()) << "\n";
     if (const std::string hint = termshade::NearestOptionHint(app); !hint.empty()) {
@@ -215,6 +221,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
       ->check(CLI::IsMember({"none", "256", "truecolor", "24bit", "auto"}));
   command.add_flag("--mono", options.mono, "no colour: --color none");
   command
+      .add_option("--background", options.background,
+                  "the terminal's background the shades are made for: dark or light (render: "
+                  "dark; viewer: from COLORFGBG, else dark)")
+      ->check(CLI::IsMember({"dark", "light"}));
+  command
       .add_option("--lod", options.lod,
                   "level of detail: auto (a simplified copy of a big model where its triangles "
                   "are far below a sample; the viewer's default) or off (exact; render's default)")
@@ -229,6 +240,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.colour = look.mono
                       ? termshade::ColourMode::kNone
                       : *termshade::ParseColourMode(look.colour.empty() ? "auto" : look.colour);
+  if (!look.background.empty()) viewer.background = termshade::ParseBackground(look.background);
   viewer.render.method = *termshade::ParseMethod(look.method);
   viewer.render.shade = *termshade::ParseShadeMode(look.shade);
   if (const auto problem = termshade::ShadeRamp::Problem(look.ramp)) {
@@ -255,6 +267,14 @@ int Run(int argc, char** argv) {
       "termshade"};  // named here, so a hostile argv[0] never reaches the help text
   std::string generateWhat;
   termshade::SetUpHelp(app, TERMSHADE_VERSION, generateWhat);
+  // Defaults from a configuration file: the user's for the viewer, a named one for render.
+  termshade::ConfigChoice config = termshade::ChooseConfig(argc, argv);
+  if (const auto problem = termshade::ConfigFileProblem(config)) {
+    std::cerr << "termshade: " << *problem << "\n";
+    return 2;
+  }
+  bool printConfig = false;
+  termshade::AddConfigOptions(app, config, printConfig);
   app.require_subcommand(0, 1);
 
   // The viewer: termshade [MODEL...]
@@ -283,13 +303,20 @@ int Run(int argc, char** argv) {
       ->type_name("MODEL");
   AddViewOptions(*renderCommand, render);
   AddLookOptions(*renderCommand, render);
-  renderCommand->add_option("--format", render.format, "text (default), ansi or json")
-      ->check(CLI::IsMember({"text", "ansi", "json"}));
+  renderCommand
+      ->add_option("--format", render.format,
+                   "text (default), ansi, json, svg (a picture of the frame) or asciicast (an "
+                   "asciinema recording of the turntable)")
+      ->check(CLI::IsMember({"text", "ansi", "json", "svg", "asciicast"}));
   AddOutputOption(*renderCommand, render.outputPath,
                   "write to FILE instead of stdout (- is stdout); a regular file is replaced "
                   "whole, through its links");
   renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
       ->check(CLI::Range(1, 100000));
+  renderCommand
+      ->add_option("--fps", render.framesPerSecond,
+                   "asciicast: frames a second of the recording (default 25, the viewer's)")
+      ->check(CLI::Range(0.01, 1000.0));
   AddAngleOption(*renderCommand, "--step", render.stepRadians,
                  "turntable: theta step between frames, radians or Ndeg (default 0.1)");
   AddUpOption(*renderCommand, render.upAxis);
@@ -299,6 +326,9 @@ int Run(int argc, char** argv) {
                    "content cannot tell it (standard input)")
       ->type_name("EXT");
   AddLoadLimitOptions(*renderCommand, render.loadLimits);
+  renderCommand->add_flag("--print-config", printConfig,
+                          "print the effective configuration (defaults, --config FILE and the "
+                          "command line) and exit");
 
   renderCommand
       ->add_option("--reader", render.reader,
@@ -322,7 +352,8 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(size_t{8}, size_t{50000000}));
 
   // Measurements: termshade bench terminal [options]
-  CLI::App* benchCommand = app.add_subcommand("bench", "measure the program (see README)");
+  CLI::App* benchCommand =
+      app.add_subcommand("bench", "measure the program (see docs/performance.md)");
   benchCommand->require_subcommand(1);
   termshade::TerminalBenchOptions terminalBench;
   CLI::App* terminalCommand = benchCommand->add_subcommand(
@@ -439,12 +470,17 @@ int Run(int argc, char** argv) {
 
   termshade::AddExamples(app);
   bool done = false;
-  const int parseCode = ParseOrExit(app, argc, argv, done);
+  const int parseCode =
+      ParseOrExit(app, static_cast<int>(config.argv.size()), config.argv.data(), config.path, done);
   if (done) return parseCode;
   // The environment's load limits, checked as their options are (exit 2).
   if (const auto problem = termshade::LoadEnvironmentProblem()) {
     std::cerr << "termshade: " << termshade::SanitizeForTerminal(*problem) << "\n";
     return 2;
+  }
+  if (printConfig) {
+    std::cout << termshade::SanitizeLinesForTerminal(termshade::EffectiveConfig(app));
+    return 0;
   }
   if (!generateWhat.empty()) return termshade::RunGenerate(app, TERMSHADE_VERSION, generateWhat);
   if (renderCommand->parsed()) return termshade::RunRenderCommand(render);

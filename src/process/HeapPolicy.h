@@ -7,7 +7,7 @@ namespace termshade {
 /// Makes big arrays come from the heap and stay there once freed, instead of
 /// fresh zeroed pages from mmap for each: a big model's load frees and
 /// allocates hundreds of MB in turn, and on this kind of VM the kernel's page
-/// zeroing was a third of the load (README, "Big models"). One arena serves
+/// zeroing was a third of the load (docs/load-and-memory.md, "Heap policy"). One arena serves
 /// every thread: a second arena's free top stays resident (malloc_trim frees
 /// only the main heap's top), so a job abandoned on a worker thread kept tens
 /// of MB after the viewer dropped its model. Call once at start, before any

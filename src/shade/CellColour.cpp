@@ -40,24 +40,27 @@ double Distance(Srgb8 a, Srgb8 b) {
          (2.0 + (255.0 - meanRed) / 256.0) * db * db;
 }
 
-// Palette entries 16..255 within the luminance bounds, with their colours.
+// Palette entries 16..255 that keep the least contrast against a background.
 struct PaletteEntry {
   int index;
   Srgb8 colour;
 };
-const std::vector<PaletteEntry>& VisiblePalette() {
-  static const std::vector<PaletteEntry> entries = [] {
-    std::vector<PaletteEntry> out;
-    for (int index = 16; index < 256; ++index) {
-      const Srgb8 colour = Palette256Colour(index);
-      const double luminance = RelativeLuminance(colour);
-      if (luminance >= kMinCellLuminance && luminance <= kMaxCellLuminance) {
-        out.push_back({index, colour});
-      }
+std::vector<PaletteEntry> PaletteAgainst(Background background) {
+  std::vector<PaletteEntry> out;
+  for (int index = 16; index < 256; ++index) {
+    const Srgb8 colour = Palette256Colour(index);
+    const double luminance = RelativeLuminance(colour);
+    if (background == Background::kDark ? luminance >= kDarkFloorLuminance
+                                         : luminance <= kLightCeilingLuminance) {
+      out.push_back({index, colour});
     }
-    return out;
-  }();
-  return entries;
+  }
+  return out;
+}
+const std::vector<PaletteEntry>& VisiblePalette(Background background) {
+  static const std::vector<PaletteEntry> dark = PaletteAgainst(Background::kDark);
+  static const std::vector<PaletteEntry> light = PaletteAgainst(Background::kLight);
+  return background == Background::kDark ? dark : light;
 }
 
 }  // namespace
@@ -67,23 +70,23 @@ double IntensityForLevel(int level, int levelCount) {
   return std::clamp(static_cast<double>(level) / (levelCount - 1), 0.0, 1.0);
 }
 
-Srgb8 ShadedFaceColour(Rgb faceLinear, double intensity) {
-  // Step 1: the face colour, no brighter than the brightest bound.
+Srgb8 ShadedFaceColour(Rgb faceLinear, double intensity, Background background) {
+  // Step 1: the face colour; on a light background no brighter than its ceiling.
   Linear c{std::clamp<double>(faceLinear.r, 0.0, 1.0), std::clamp<double>(faceLinear.g, 0.0, 1.0),
            std::clamp<double>(faceLinear.b, 0.0, 1.0)};
   const double faceLuminance = LuminanceOf(c);
-  if (faceLuminance > kMaxCellLuminance) {
-    const double scale = kMaxCellLuminance / faceLuminance;
+  if (background == Background::kLight && faceLuminance > kLightCeilingLuminance) {
+    const double scale = kLightCeilingLuminance / faceLuminance;
     c = {c.r * scale, c.g * scale, c.b * scale};
   }
   // Step 2: x intensity, from kDarkestShare at 0 to the whole colour at 1.
   const double share = kDarkestShare + (1.0 - kDarkestShare) * std::clamp(intensity, 0.0, 1.0);
   c = {c.r * share, c.g * share, c.b * share};
-  // Step 3: a shade below the darkest bound is lifted with grey (the
-  // luminance weights sum to 1, so adding g to each component adds g).
+  // Step 3: on a dark background, a shade below the floor is lifted with grey
+  // (the luminance weights sum to 1, so adding g to each component adds g).
   const double luminance = LuminanceOf(c);
-  if (luminance < kMinCellLuminance) {
-    const double lift = kMinCellLuminance - luminance;
+  if (background == Background::kDark && luminance < kDarkFloorLuminance) {
+    const double lift = kDarkFloorLuminance - luminance;
     c = {c.r + lift, c.g + lift, c.b + lift};
   }
   return {ToByte(EncodeSrgb(c.r)), ToByte(EncodeSrgb(c.g)), ToByte(EncodeSrgb(c.b))};
@@ -100,10 +103,11 @@ Srgb8 Palette256Colour(int index) {
           kLevels[static_cast<size_t>(cube % 6)]};
 }
 
-int Nearest256Colour(Srgb8 colour) {
-  int best = VisiblePalette().front().index;
-  double bestDistance = Distance(colour, VisiblePalette().front().colour);
-  for (const PaletteEntry& entry : VisiblePalette()) {
+int Nearest256Colour(Srgb8 colour, Background background) {
+  const std::vector<PaletteEntry>& palette = VisiblePalette(background);
+  int best = palette.front().index;
+  double bestDistance = Distance(colour, palette.front().colour);
+  for (const PaletteEntry& entry : palette) {
     const double distance = Distance(colour, entry.colour);
     if (distance < bestDistance) {  // ties keep the lower index
       best = entry.index;
@@ -113,16 +117,16 @@ int Nearest256Colour(Srgb8 colour) {
   return best;
 }
 
-TermColour CellColour(Rgb faceLinear, double intensity, ColourMode mode) {
+TermColour CellColour(Rgb faceLinear, double intensity, ColourMode mode, Background background) {
   TermColour out;
   if (mode == ColourMode::kNone || mode == ColourMode::kAuto) return out;
-  const Srgb8 shaded = ShadedFaceColour(faceLinear, intensity);
+  const Srgb8 shaded = ShadedFaceColour(faceLinear, intensity, background);
   if (mode == ColourMode::kTrueColour) {
     out.kind = TermColour::Kind::kRgb;
     out.rgb = shaded;
   } else {
     out.kind = TermColour::Kind::kIndexed;
-    out.index = static_cast<uint8_t>(Nearest256Colour(shaded));
+    out.index = static_cast<uint8_t>(Nearest256Colour(shaded, background));
   }
   return out;
 }
@@ -145,7 +149,8 @@ TermColour CellColourMap::ForFace(uint32_t faceNumber, int level) {
   std::memcpy(&key.b, &face.b, sizeof(float));
   key.level = level;
   const auto [at, inserted] = cache_.try_emplace(key);
-  if (inserted) at->second = CellColour(face, IntensityForLevel(level, levelCount_), mode_);
+  if (inserted)
+    at->second = CellColour(face, IntensityForLevel(level, levelCount_), mode_, background_);
   return at->second;
 }
 

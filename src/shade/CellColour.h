@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "geometry/Rgb.h"
+#include "shade/Background.h"
 #include "shade/ColourMode.h"
 
 namespace termshade {
@@ -30,32 +31,37 @@ struct TermColour {
 /// The colour of faces whose file gives none (SPEC 10): a neutral light grey.
 constexpr Rgb kDefaultFaceColour{0.8F, 0.8F, 0.8F};
 
-/// Relative luminance bounds of every shaded cell colour: the darkest stays
-/// visible on a black background and the brightest on a white one. WCAG
-/// contrast (L1 + 0.05) / (L2 + 0.05): 2.6 against black, 2.6 against white
-/// (a little less after rounding to 8 bits, never below 2.5).
-constexpr double kMinCellLuminance = 0.08;
-constexpr double kMaxCellLuminance = 0.36;
-/// Intensity 0 keeps this share of the face's (capped) brightness.
-constexpr double kDarkestShare = 0.2;
+/// The least WCAG 2 contrast, (L1 + 0.05) / (L2 + 0.05), every shaded cell
+/// colour keeps against the terminal's background, so silhouettes stay
+/// visible; there is no bound against the other end.
+constexpr double kMinBackgroundContrast = 1.5;
+/// On a dark (black) background: the darkest shade's least relative luminance.
+constexpr double kDarkFloorLuminance = kMinBackgroundContrast * 0.05 - 0.05;  // 0.025
+/// On a light (white) background: the brightest shade's most relative luminance.
+constexpr double kLightCeilingLuminance = 1.05 / kMinBackgroundContrast - 0.05;  // 0.65
+/// Intensity 0 keeps this share of the face's brightness: close to black.
+constexpr double kDarkestShare = 0.08;
 
 /// Intensity in [0, 1] of shade level `level` of `levelCount` (dark to bright).
 double IntensityForLevel(int level, int levelCount);
 
-/// Face colour x intensity, in linear light, kept within the luminance
-/// bounds (a too bright colour is scaled down, keeping its hue; a too dark
-/// shade is lifted with grey), encoded as sRGB. The truecolor cell colour.
-Srgb8 ShadedFaceColour(Rgb faceLinear, double intensity);
+/// Face colour x intensity, from kDarkestShare of the face's colour at 0 to
+/// all of it at 1, in linear light, encoded as sRGB once: the truecolor
+/// cell colour. On a dark background a shade darker than kDarkFloorLuminance
+/// is lifted with grey; on a light one a face brighter than
+/// kLightCeilingLuminance is scaled down first, keeping its hue.
+Srgb8 ShadedFaceColour(Rgb faceLinear, double intensity, Background background = Background::kDark);
 
-/// The nearest entry of the 6x6x6 cube or the grey ramp (16..255) whose
-/// luminance lies within the bounds above.
-int Nearest256Colour(Srgb8 colour);
+/// The nearest entry of the 6x6x6 cube or the grey ramp (16..255) that keeps
+/// kMinBackgroundContrast against the background.
+int Nearest256Colour(Srgb8 colour, Background background = Background::kDark);
 /// The sRGB value of a palette entry 16..255 as xterm defines it.
 Srgb8 Palette256Colour(int index);
 
 /// The one mapping from (face colour, intensity) to a terminal colour, used
 /// by the viewer and the ansi dump, for a glyph's foreground or a background.
-TermColour CellColour(Rgb faceLinear, double intensity, ColourMode mode);
+TermColour CellColour(Rgb faceLinear, double intensity, ColourMode mode,
+                      Background background = Background::kDark);
 
 /// WCAG 2 relative luminance of an sRGB colour, in [0, 1].
 double RelativeLuminance(Srgb8 colour);
@@ -67,8 +73,9 @@ double ContrastRatio(Srgb8 a, Srgb8 b);
 /// Remembers what it computed, so a frame costs a lookup per cell.
 class CellColourMap {
  public:
-  CellColourMap(std::span<const Rgb> faceColours, int levelCount, ColourMode mode)
-      : faceColours_(faceColours), levelCount_(levelCount), mode_(mode) {}
+  CellColourMap(std::span<const Rgb> faceColours, int levelCount, ColourMode mode,
+                Background background = Background::kDark)
+      : faceColours_(faceColours), levelCount_(levelCount), mode_(mode), background_(background) {}
   TermColour ForFace(uint32_t faceNumber, int level);
 
  private:
@@ -84,6 +91,7 @@ class CellColourMap {
   std::span<const Rgb> faceColours_;
   int levelCount_;
   ColourMode mode_;
+  Background background_;
   std::unordered_map<Key, TermColour, KeyHash> cache_;
 };
 

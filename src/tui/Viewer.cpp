@@ -464,7 +464,8 @@ class EventLoop {
     const RenderStats stats = renderer_.Render(*pick.scene, camera, frameOptions_, depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     ++framesDrawn_;
-    CellColourMap colours(pick.scene->source.faceColors, levelCount, state_.Colour());
+    CellColourMap colours(pick.scene->source.faceColors, levelCount, state_.Colour(),
+                          state_.Background());
     painter_.PaintFrame(cells_, colours, grid_);
     // Step 2: overlays and the status line, then one write of what changed.
     if (state_.HelpShown()) painter_.PaintHelp(grid_);
@@ -563,6 +564,10 @@ int RunViewer(const ViewerOptions& options) {
   }
   ViewerOptions effective = options;
   effective.colour = ResolveColourMode(options.colour);
+  if (!effective.background) {
+    const char* colorFgBg = std::getenv("COLORFGBG");
+    effective.background = BackgroundFromColorFgBg(colorFgBg != nullptr ? colorFgBg : "");
+  }
   ViewerState state(effective, TerminalSession::ReportedCellAspect());
   std::setlocale(LC_ALL, "");
   const std::string codeset = nl_langinfo(CODESET);

@@ -8,6 +8,7 @@
 #include "geometry/UpAxis.h"
 #include "io/load/ModelLoader.h"
 #include "raster/RenderOptions.h"
+#include "shade/Background.h"
 #include "shade/ColourMode.h"
 
 namespace termshade {
@@ -18,6 +19,8 @@ struct ViewerOptions {
   std::optional<double> cellAspect;     ///< unset: from the terminal, else 2.0
   /// kAuto is resolved from the terminal before the viewer starts.
   ColourMode colour = ColourMode::kAuto;
+  /// The terminal's background; unset: what COLORFGBG says, else dark.
+  std::optional<Background> background;
   RenderOptions render;
   std::optional<GlyphMode> glyphs;  ///< unset: PickGlyphMode for the terminal
   std::optional<UpAxis> upAxis;     ///< unset: each file's own (SPEC 10)

@@ -45,6 +45,7 @@ ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
                       ? ColourMode::k256
                       : options.colour),
       colourOn_(options.colour != ColourMode::kNone && options.colour != ColourMode::kAuto),
+      background_(options.background.value_or(termshade::Background::kDark)),
       upAxis_(options.upAxis),
       loadLimits_(options.loadLimits),
       startTheta_(options.theta),

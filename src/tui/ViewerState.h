@@ -94,6 +94,8 @@ class ViewerState {
   const LoadLimits& Limits() const { return loadLimits_; }
   /// The colour mode cells are drawn in now (kNone after `c` turned it off).
   ColourMode Colour() const { return colourOn_ ? colourMode_ : ColourMode::kNone; }
+  /// The terminal's background the shades are made for.
+  termshade::Background Background() const { return background_; }
   /// The glyph mode, and whether the terminal's locale can show the modes beyond ASCII.
   void SetGlyphs(GlyphMode mode, bool utf8) {
     render_.glyphs = mode;
@@ -136,6 +138,7 @@ class ViewerState {
   RenderOptions render_;
   ColourMode colourMode_ = ColourMode::k256;  ///< what `c` turns on
   bool colourOn_ = true;
+  termshade::Background background_ = termshade::Background::kDark;
   bool utf8_ = true;
   std::optional<UpAxis> upAxis_;
   LoadLimits loadLimits_;

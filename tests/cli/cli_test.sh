@@ -78,6 +78,14 @@ expect ansi_auto_truecolor_24bit grep -q $'\x1b\\[38;2;' "$work/out"
 check ansi_auto_256 0 "" -- env -u NO_COLOR -u COLORTERM TERM=xterm-256color "$bin" render "$src/data/cube.dat" --format ansi --size 30x10 --color auto
 expect ansi_auto_256_indexed grep -q $'\x1b\\[38;5;' "$work/out"
 check bad_color 2 "--color" -- "$bin" render "$src/data/cube.dat" --color 16
+# --background: shades made for a light terminal differ from the dark default, with the same text.
+"$bin" render "$src/data/sphere_cone.dat" --format ansi --color truecolor --size 50x16 >"$work/dark.ans"
+check background_light 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --color truecolor --size 50x16 --background light
+expect background_light_other_colours bash -c "! cmp -s '$work/out' '$work/dark.ans'"
+expect background_light_same_text cmp -s <(sed 's/\x1b\[[0-9;]*m//g' "$work/out") "$work/plain"
+check background_dark_is_the_default 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --color truecolor --size 50x16 --background dark
+expect background_dark_is_the_default_same cmp -s "$work/out" "$work/dark.ans"
+check bad_background 2 "--background" -- "$bin" render "$src/data/cube.dat" --background grey
 # Glyph modes (SPEC 11): each one renders; ramp is render's default; a bad name is usage.
 for mode in ascii blocks quadrants sextants braille; do
   check "glyphs_$mode" 0 "" -- "$bin" render "$src/data/cube.dat" --glyphs "$mode" --size 30x10

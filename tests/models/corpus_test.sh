@@ -4,7 +4,7 @@
 # time, each under a time and memory cap, and fails on any crash, hang, stray
 # control byte, unnamed error or read outside a model's folder.
 # Usage: corpus_test.sh TERMSHADE [--markdown] [--no-memory-cap] DIR...
-#   --markdown: print the outcome table for the README instead of failing.
+#   --markdown: print the outcome table for docs/real-models.md instead of failing.
 set -u
 bin=$1
 shift

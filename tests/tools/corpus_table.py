@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's table of real models from the Assimp test corpus (Debian
+"""docs/real-models.md's table of real models from the Assimp test corpus (Debian
 package assimp-testmodels): for each file, whether termshade loads it, the up
 axis it uses and where that comes from, whether the model stands upright at the
 default view, the colours the file gives, and ms per frame (from
@@ -8,7 +8,7 @@ before/after frames of the duck.
 
 Usage (from the source tree, after a release build):
   tests/tools/corpus_table.py [--termshade build/termshade] [--corpus /usr/share/assimp/models]
-                              [--readme README.md]
+                              [--readme docs/real-models.md]
 Without --readme it prints the Markdown; with it, it replaces the text between
 the corpus-table markers in that file.
 

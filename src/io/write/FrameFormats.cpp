@@ -124,6 +124,8 @@ std::optional<FrameFormat> ParseFrameFormat(std::string_view name) {
   if (name == "text") return FrameFormat::kText;
   if (name == "ansi") return FrameFormat::kAnsi;
   if (name == "json") return FrameFormat::kJson;
+  if (name == "svg") return FrameFormat::kSvg;
+  if (name == "asciicast") return FrameFormat::kAsciicast;
   return std::nullopt;
 }
 
@@ -135,8 +137,8 @@ void AppendTextFrame(const CellBuffer& cells, std::string& out) {
 }
 
 void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, int levelCount,
-                     ColourMode mode, std::string& out) {
-  CellColourMap colours(faceColours, levelCount, mode);
+                     ColourMode mode, std::string& out, Background background) {
+  CellColourMap colours(faceColours, levelCount, mode, background);
   for (int row = 0; row < cells.HeightCells(); ++row) {
     TermColour current, currentBack;  // the terminal's defaults until a cell sets one
     for (int col = 0; col < cells.WidthCells(); ++col) {

@@ -14,8 +14,10 @@
 
 namespace termshade {
 
-/// Frame dump formats of SPEC 7.
-enum class FrameFormat { kText, kAnsi, kJson };
+/// Frame dump formats of SPEC 7, and the pictures made from the ansi dump:
+/// an SVG picture (io/write/SvgFrame.h) and an asciinema recording
+/// (io/write/AsciicastRecording.h).
+enum class FrameFormat { kText, kAnsi, kJson, kSvg, kAsciicast };
 
 std::optional<FrameFormat> ParseFrameFormat(std::string_view name);
 
@@ -26,9 +28,10 @@ void AppendTextFrame(const CellBuffer& cells, std::string& out);
 /// colour at its shade level (CellColour, as the viewer shows it); where a
 /// two-colour glyph mode gives a cell a background face, the background in
 /// that face's colour, else the terminal's own; a line that set a colour
-/// ends with a reset. ColourMode::kNone gives the text frame.
+/// ends with a reset. ColourMode::kNone gives the text frame. Shades are
+/// made for a terminal with `background` (shade/Background.h).
 void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, int levelCount,
-                     ColourMode mode, std::string& out);
+                     ColourMode mode, std::string& out, Background background = Background::kDark);
 
 /// The SGR sequence that sets the foreground, or the background, to colour.
 void AppendForegroundSgr(const TermColour& colour, std::string& out);

@@ -1,0 +1,85 @@
+#include "io/write/AsciicastRecording.h"
+
+#include <cstdio>
+
+namespace termshade {
+namespace {
+
+void AppendSeconds(double seconds, std::string& out) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6f", seconds);
+  out += text;
+}
+
+}  // namespace
+
+void AppendJsonText(std::string_view text, std::string& out) {
+  out += '"';
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (byte < 0x20 || byte == 0x7F) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", byte);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  out += '"';
+}
+
+AsciicastRecording::AsciicastRecording(int widthCells, int heightCells, double framesPerSecond,
+                                       const TerminalTheme& theme)
+    : widthCells_(widthCells),
+      heightCells_(heightCells),
+      framesPerSecond_(framesPerSecond),
+      theme_(theme) {}
+
+void AsciicastRecording::AppendFrame(std::string_view ansiFrame, std::string& out) {
+  // Step 1: the header, before the first frame.
+  std::string bytes;
+  if (framesWritten_ == 0) {
+    out += "{\"version\": 2, \"width\": " + std::to_string(widthCells_) +
+           ", \"height\": " + std::to_string(heightCells_) + ", \"theme\": {\"fg\": \"" +
+           HexColour(theme_.foreground) + "\", \"bg\": \"" + HexColour(theme_.background) +
+           "\", \"palette\": \"";
+    for (size_t i = 0; i < theme_.palette.size(); ++i) {
+      if (i > 0) out += ':';
+      out += HexColour(theme_.palette[i]);
+    }
+    out += "\"}, \"env\": {\"TERM\": \"xterm-256color\"}}\n";
+    bytes = "\x1b[?25l\x1b[2J";
+  }
+  // Step 2: the frame from the top left, rows joined by CR LF; no line feed
+  // after the last row, so a terminal of the frame's height never scrolls.
+  bytes += "\x1b[H";
+  std::string_view rest = ansiFrame;
+  while (!rest.empty()) {
+    const size_t end = rest.find('\n');
+    bytes += rest.substr(0, end);
+    if (end == std::string_view::npos || end + 1 == rest.size()) break;
+    bytes += "\r\n";
+    rest.remove_prefix(end + 1);
+  }
+  // Step 3: the event, at the frame's time.
+  out += '[';
+  AppendSeconds(static_cast<double>(framesWritten_) / framesPerSecond_, out);
+  out += ", \"o\", ";
+  AppendJsonText(bytes, out);
+  out += "]\n";
+  ++framesWritten_;
+}
+
+void AsciicastRecording::AppendEnd(std::string& out) const {
+  if (framesWritten_ == 0) return;
+  out += '[';
+  AppendSeconds(static_cast<double>(framesWritten_ - 1) / framesPerSecond_, out);
+  out += ", \"o\", ";
+  AppendJsonText("\x1b[?25h", out);
+  out += "]\n";
+}
+
+}  // namespace termshade
