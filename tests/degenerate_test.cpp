@@ -2,6 +2,9 @@
 // method (the sanitizer build runs these under ASan and UBSan).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "io/load/ModelLoader.h"
 #include "io/read/DatReader.h"
 #include "support/TestSupport.h"
@@ -69,6 +72,46 @@ TEST(Degenerate, HugeAndTinyCoordinates) {
 TEST(Degenerate, SelfIntersectingAndNonPlanarFaces) {
   RenderEveryWay(FromText("1 0 0 0\n2 2 2 0\n3 2 0 0\n4 0 2 0\nFaces:\n1 2 3 4.\n4 3 2 1.\n"));
   RenderEveryWay(FromText("1 0 0 0\n2 1 0 1\n3 1 1 0\n4 0 1 1\nFaces:\n1 2 3 4.\n4 3 2 1.\n"));
+}
+
+}  // namespace
+}  // namespace termshade
+
+namespace termshade {
+namespace {
+
+// Issue 32: one triangle repeated (the first kept, the faces keep their
+// numbers), one polygon repeated (triangulated once), drawn every way.
+TEST(Degenerate, RepeatedTrianglesAreDrawnOnce) {
+  std::string text = "1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 1\nFaces:\n";
+  for (int i = 0; i < 100; ++i) text += "1 2 3.\n";
+  text += "2 4 3.\n";
+  const Scene scene = FromText(text);
+  EXPECT_EQ(scene.FaceCount(), 101U);
+  ASSERT_EQ(scene.triangles.size(), 2U);
+  EXPECT_EQ(scene.TriangleFace(0), 0U);
+  EXPECT_EQ(scene.TriangleFace(1), 100U);
+  EXPECT_EQ(scene.FaceTrianglesBegin(1), 1U);  // faces 1..99: no triangles of their own
+  EXPECT_EQ(scene.FaceTrianglesBegin(100), 1U);
+  EXPECT_EQ(scene.FaceTrianglesBegin(101), 2U);
+  EXPECT_EQ(scene.Face(100).size(), 3U);  // the faces are kept: the triangles no longer give them
+  RenderEveryWay(scene);
+}
+
+TEST(Degenerate, ARepeatedPolygonIsTriangulatedOnce) {
+  std::string text, face;
+  for (int i = 0; i < 100; ++i) {
+    const double angle = 2 * 3.141592653589793 * i / 100;
+    text += std::to_string(i + 1) + " " + std::to_string(std::cos(angle)) + " " +
+            std::to_string(std::sin(angle)) + " 0\n";
+    face += std::to_string(i + 1) + " ";
+  }
+  text += "Faces:\n";
+  for (int i = 0; i < 2000; ++i) text += face + ".\n";
+  const Scene scene = FromText(text);
+  EXPECT_EQ(scene.FaceCount(), 2000U);
+  EXPECT_EQ(scene.triangles.size(), 98U);
+  RenderEveryWay(scene);
 }
 
 }  // namespace

@@ -209,3 +209,25 @@ TEST(LevelOfDetail, ModeNames) {
 
 }  // namespace
 }  // namespace termshade
+
+namespace termshade {
+namespace {
+
+// Issue 32: 30,000 triangles at the same place, each with its own vertices
+// (no weld joins them): the edge collapse would be quadratic; the build is
+// skipped at once, saying why.
+TEST(LevelOfDetail, CoincidentTrianglesAreSkippedWithAReason) {
+  Mesh mesh;
+  for (uint32_t t = 0; t < 30000; ++t) {
+    mesh.verticesFile.insert(mesh.verticesFile.end(), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    mesh.AddFace(std::vector<uint32_t>{3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  const Scene scene = PrepareScene(std::move(mesh));
+  ASSERT_EQ(scene.triangles.size(), 30000U);
+  const DetailLevels levels = BuildDetailLevels(scene);
+  EXPECT_TRUE(levels.levels.empty());
+  EXPECT_NE(levels.skippedBecause.find("repeat"), std::string::npos) << levels.skippedBecause;
+}
+
+}  // namespace
+}  // namespace termshade

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <clocale>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "geometry/FitCamera.h"
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
+#include "io/load/ModelExtensions.h"
 #include "io/load/ModelLoader.h"
 #include "io/write/AsciicastRecording.h"
 #include "io/write/FrameFormats.h"
@@ -43,6 +45,10 @@ GlyphMode AutoGlyphs(bool colour) {
   return PickGlyphMode(utf8, colour, term != nullptr ? term : "",
                        termProgram != nullptr ? termProgram : "");
 }
+
+// The largest turntable step: with 100000 frames, theta stays below 1e11
+// radians, where a double still resolves 1e-5.
+constexpr double kMostStepRadians = 1e6;
 
 int UsageError(const std::string& message) {
   std::cerr << "termshade render: " << message << "\n";
@@ -134,11 +140,10 @@ std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* l
     sink.renderer.Render(drawn, camera, renderOptions, sink.depth, sink.cells);
     sink.text.clear();
     AppendFrame(drawn, camera, renderOptions, format, colourMode, background, sink);
-    const std::string& text = sink.text;
-    if (sink.file) {
-      if (auto problem = sink.file->Write(text)) return problem;
-    } else {
-      std::cout.write(text.data(), static_cast<std::streamsize>(text.size()));
+    // The first failed write ends the run (a closed pipe, a full disk).
+    if (auto problem =
+            sink.file ? sink.file->Write(sink.text) : WriteWhole(STDOUT_FILENO, sink.text)) {
+      return problem;
     }
   }
   return std::nullopt;
@@ -176,6 +181,23 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       !std::isfinite(options.stepRadians) || !std::isfinite(options.rho) || options.rho < 0.0) {
     return UsageError("--theta, --phi and --step must be finite, --rho finite and positive");
   }
+  // Every frame's theta stays a finite, meaningful angle (1e308 twice over is infinite).
+  if (std::fabs(options.stepRadians) > kMostStepRadians) {
+    return UsageError("--step: must be at most 1e6 radians either way");
+  }
+  if (!options.inputFormat.empty()) {
+    const std::vector<std::string> known = ModelFileExtensions();
+    std::string format =
+        options.inputFormat.front() == '.' ? options.inputFormat.substr(1) : options.inputFormat;
+    std::transform(format.begin(), format.end(), format.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (!std::binary_search(known.begin(), known.end(), format)) {
+      std::string list;
+      for (const std::string& extension : known) list += (list.empty() ? "" : " ") + extension;
+      return UsageError("--input-format: unknown format '" +
+                        SanitizeForTerminal(options.inputFormat) + "' (known: " + list + ")");
+    }
+  }
   for (const std::string& modelPath : options.modelPaths) {
     if (!options.outputPath.empty() && modelPath != "-" &&
         SameFile(options.outputPath, modelPath)) {
@@ -188,8 +210,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   // file): a file replaced whole (never half-written), or stdout.
   FrameSink sink;
   const auto outputFailed = [&](const std::string& why) {
-    std::cerr << SanitizeForTerminal(options.outputPath) << ": " << SanitizeForTerminal(why)
-              << "\n";
+    std::cerr << (options.outputPath.empty() ? "termshade render: standard output"
+                                             : SanitizeForTerminal(options.outputPath))
+              << ": " << SanitizeForTerminal(why) << "\n";
     return 1;
   };
   bool opened = false;
@@ -197,7 +220,13 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     if (opened || options.outputPath.empty()) return std::nullopt;
     opened = true;
     sink.file.emplace(options.outputPath);
-    return sink.file->Open();
+    auto problem = sink.file->Open();
+    if (!problem && !sink.file->InPlaceReason().empty()) {
+      std::cerr << "termshade render: note: " << SanitizeForTerminal(options.outputPath)
+                << " is written in place, not replaced whole: "
+                << SanitizeForTerminal(sink.file->InPlaceReason()) << "\n";
+    }
+    return problem;
   };
 
   // Step 3: each model's frames, one model after another; a model that
@@ -252,24 +281,19 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     }
   }
 
-  // Step 4: a recording's closing event, then the file committed whole, or stdout flushed.
+  // Step 4: a recording's closing event, then the file committed whole
+  // (stdout was written frame by frame).
   if (sink.record) {
     sink.text.clear();
     sink.record->AppendEnd(sink.text);
-    if (sink.file) {
-      if (const auto problem = sink.file->Write(sink.text)) return outputFailed(*problem);
-    } else {
-      std::cout << sink.text;
+    if (const auto problem =
+            sink.file ? sink.file->Write(sink.text) : WriteWhole(STDOUT_FILENO, sink.text)) {
+      return outputFailed(*problem);
     }
   }
+
   if (sink.file) {
     if (const auto problem = sink.file->Commit()) return outputFailed(*problem);
-    return exitCode;
-  }
-  std::cout.flush();
-  if (!std::cout) {
-    std::cerr << "termshade render: writing the frames to standard output failed\n";
-    return 1;
   }
   return exitCode;
 }

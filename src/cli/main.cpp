@@ -26,7 +26,9 @@
 #include "io/load/ModelLoader.h"
 #include "io/read/LoadBudget.h"
 #include "io/read/LoadError.h"
+#include "io/read/LoadOptions.h"
 #include "process/HeapPolicy.h"
+#include "process/StandardDescriptors.h"
 #include "tui/Viewer.h"
 
 namespace {
@@ -88,8 +90,10 @@ void AddSizeOption(CLI::App& command, RenderCommandOptions& options) {
             if (!std::regex_match(text, match, kSize)) {
               throw CLI::ValidationError("--size", "expected COLSxROWS, e.g. 80x24");
             }
-            // More than 9 digits is out of range anyway (and past what stoi takes).
-            auto count = [](const std::string& digits) {
+            // Leading zeros do not count; more than 9 digits is out of range
+            // anyway (and past what stoi takes).
+            auto count = [](std::string digits) {
+              digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
               return digits.size() > 9 ? INT32_MAX : std::stoi(digits);
             };
             const int cols = count(match[1]), rows = count(match[2]);
@@ -119,6 +123,22 @@ void AddAngleOption(CLI::App& command, const std::string& name, double& radians,
           },
           description)
       ->type_name("ANGLE");
+}
+
+// -o FILE: - is standard output (left empty); an empty name is a usage error.
+void AddOutputOption(CLI::App& command, std::string& path, const std::string& description) {
+  command
+      .add_option_function<std::string>(
+          "-o,--output",
+          [&path](const std::string& text) {
+            if (text.empty()) {
+              throw CLI::ValidationError("--output",
+                                         "the file name is empty (- is standard output)");
+            }
+            path = text == "-" ? std::string() : text;
+          },
+          description)
+      ->type_name("FILE");
 }
 
 void AddUpOption(CLI::App& command, std::optional<termshade::UpAxis>& upAxis) {
@@ -290,8 +310,9 @@ int Run(int argc, char** argv) {
                    "text (default), ansi, json, svg (a picture of the frame) or asciicast (an "
                    "asciinema recording of the turntable)")
       ->check(CLI::IsMember({"text", "ansi", "json", "svg", "asciicast"}));
-  renderCommand->add_option("-o,--output", render.outputPath, "write to FILE instead of stdout")
-      ->type_name("FILE");
+  AddOutputOption(*renderCommand, render.outputPath,
+                  "write to FILE instead of stdout (- is stdout); a regular file is replaced "
+                  "whole, through its links");
   renderCommand->add_option("--frames", render.frames, "turntable: number of frames (default 1)")
       ->check(CLI::Range(1, 100000));
   renderCommand
@@ -325,11 +346,9 @@ int Run(int argc, char** argv) {
       ->add_option("scene", generate.name,
                    "scene name, 'all' (with -o DIRECTORY), or 'sphere' (see --triangles)")
       ->required();
-  generateCommand
-      ->add_option(
-          "-o,--output", generate.outputPath,
-          "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all')")
-      ->type_name("FILE");
+  AddOutputOption(*generateCommand, generate.outputPath,
+                  "file: .dat, .obj, binary .stl or binary .ply by extension (directory for 'all'; "
+                  "- is stdout)");
   generateCommand
       ->add_option("--triangles", generate.triangles, "sphere: about N triangles (default 200000)")
       ->check(CLI::Range(size_t{8}, size_t{50000000}));
@@ -475,6 +494,11 @@ int Run(int argc, char** argv) {
   const int parseCode =
       ParseOrExit(app, static_cast<int>(config.argv.size()), config.argv.data(), config.path, done);
   if (done) return parseCode;
+  // The environment's load limits, checked as their options are (exit 2).
+  if (const auto problem = termshade::LoadEnvironmentProblem()) {
+    std::cerr << "termshade: " << termshade::SanitizeForTerminal(*problem) << "\n";
+    return 2;
+  }
   if (printConfig) {
     std::cout << termshade::SanitizeLinesForTerminal(termshade::EffectiveConfig(app));
     return 0;
@@ -512,6 +536,7 @@ int main(int argc, char** argv) {
   // An ignored SIGCHLD, inherited through exec, would let the kernel reap the
   // import helper before termshade reads how it ended.
   std::signal(SIGCHLD, SIG_DFL);
+  termshade::GuardClosedStandardDescriptors();
   termshade::KeepFreedMemoryForReuse();
   try {
     return Run(argc, argv);

@@ -2,12 +2,15 @@
 
 #include <meshoptimizer.h>
 
+#include "geometry/DuplicateTriangles.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <span>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -150,6 +153,18 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
   return level;
 }
 
+// How many distinct vertices the (position-joined) indices use.
+size_t JoinedVertexCount(const std::vector<uint32_t>& indices, size_t vertexCount) {
+  std::vector<bool> used(vertexCount, false);
+  size_t count = 0;
+  for (const uint32_t v : indices) {
+    if (used[v]) continue;
+    used[v] = true;
+    ++count;
+  }
+  return count;
+}
+
 }  // namespace
 
 std::string_view DetailModeName(DetailMode mode) {
@@ -172,7 +187,20 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
   std::vector<uint32_t> newIndex(vertexCount, kNone);
   // The joined indices are only the first level's input: moved, not copied
   // (a 10M-triangle scan's build peaks 114 MB lower).
-  std::vector<uint32_t> current = std::move(source.indices), simplified(current.size());
+  std::vector<uint32_t> current = std::move(source.indices);
+  // Triangles repeated at the same positions (a triangle a million times
+  // over, unwelded copies) make the edge collapse quadratic: the first of
+  // each is kept (the triangles per joined vertex say when to look).
+  if (current.size() / 3 >
+      kRepeatCheckTrianglesPerVertex * JoinedVertexCount(current, vertexCount)) {
+    DropRepeatedTriangles(current);
+    if (current.size() / 3 < options.minSourceTriangles) {
+      result.skippedBecause = "its triangles repeat one another: fewer than " +
+                              std::to_string(options.minSourceTriangles) + " differ";
+      return result;
+    }
+  }
+  std::vector<uint32_t> simplified(current.size());
   double relativeError = 0.0;  // accumulated over the levels: each is simplified from the last
   while (!cancelled()) {
     const size_t triangles = current.size() / 3;

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -33,6 +34,8 @@ struct DetailLevel {
 struct DetailLevels {
   size_t exactTriangles = 0;
   std::vector<DetailLevel> levels;
+  /// Why a scene big enough for levels has none (degenerate input); empty otherwise.
+  std::string skippedBecause;
 };
 
 struct DetailBuildOptions {

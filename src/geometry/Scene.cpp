@@ -10,6 +10,7 @@
 #include <span>
 #include <utility>
 
+#include "geometry/DuplicateTriangles.h"
 #include "geometry/EdgeAdjacency.h"
 #include "geometry/FaceList.h"
 #include "geometry/FaceNormal.h"
@@ -172,18 +173,31 @@ void MapFacesExplicitly(Scene& scene, size_t face, size_t faceCount) {
 
 // The face's triangles, none when a corner is not finite; the maps between
 // faces and triangles are kept only once they stop being the identity.
+// A face with the corners of the one before it (hostile input: one polygon
+// 200,000 times over) gets no triangles: the earlier face's cover it, and
+// the z-buffer gives a tie to the lower face anyway.
 void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
                       std::vector<Vec3>& cornersScratch,
-                      std::vector<CornerTriangle>& trianglesScratch) {
+                      std::vector<CornerTriangle>& trianglesScratch, int64_t& pointTests) {
   const auto corners = faces.Face(face);
+  const auto before = face > 0 ? faces.Face(face - 1) : corners;
+  if (face > 0 && std::equal(corners.begin(), corners.end(), before.begin(), before.end())) {
+    if (scene.faceTriangleStarts.empty()) MapFacesExplicitly(scene, face, faces.FaceCount());
+    scene.faceTriangleStarts.push_back(static_cast<uint32_t>(scene.triangles.size()));
+    return;
+  }
   trianglesScratch.clear();
   cornersScratch.clear();
+  // Exactly what the face needs (no doubling's slack: one face may hold
+  // millions of corners; LoadBudget.h counts kTriangulateBytesPerCorner).
+  cornersScratch.reserve(corners.size());
+  trianglesScratch.reserve(corners.size());
   bool finite = true;
   for (uint32_t v : corners) {
     cornersScratch.push_back(scene.verticesWorld[v]);
     finite = finite && IsFinite(scene.verticesWorld[v]);
   }
-  if (finite) TriangulatePolygon(cornersScratch, trianglesScratch);
+  if (finite) TriangulatePolygon(cornersScratch, trianglesScratch, &pointTests);
   const bool explicitMaps = !scene.faceTriangleStarts.empty();
   if (!explicitMaps && trianglesScratch.size() != 1) {
     MapFacesExplicitly(scene, face, faces.FaceCount());
@@ -377,12 +391,17 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     AdviseHugePages(scene.triangles);
     std::vector<Vec3> cornersScratch;
     std::vector<CornerTriangle> trianglesScratch;
+    int64_t pointTests = ModelPointTestBudget(cornerCount);
     for (size_t face = 0; face < faceCount; ++face) {
-      AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch);
+      AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch, pointTests);
     }
   }
+  // Triangles repeated over and over (hostile input: a triangle a million
+  // times, a 1000-gon 20,000 times over the same corners) drawn once.
+  const size_t repeated = DropRepeatedSceneTriangles(scene, faceCount);
   // (The fast path's triangles are the faces by construction.)
-  if ((simpleTriangles && faces.hidden.empty()) || FacesAreTheTriangles(scene, faces)) {
+  if (repeated == 0 &&
+      ((simpleTriangles && faces.hidden.empty()) || FacesAreTheTriangles(scene, faces))) {
     FreeAndReleasePages(faces.corners);  // a hole the planes do not fit in
     faces.Clear();
   } else {

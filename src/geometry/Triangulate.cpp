@@ -1,5 +1,6 @@
 #include "geometry/Triangulate.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/FaceNormal.h"
@@ -47,6 +48,7 @@ std::vector<Point2> ProjectToDominantPlane(std::span<const Vec3> corners,
 
 std::vector<uint32_t> DropConsecutiveDuplicates(std::span<const Vec3> corners) {
   std::vector<uint32_t> kept;
+  kept.reserve(corners.size());
   for (uint32_t i = 0; i < corners.size(); ++i) {
     if (!kept.empty() && corners[kept.back()] == corners[i]) continue;
     kept.push_back(i);
@@ -61,7 +63,8 @@ constexpr int64_t kPointTestBudget = 50'000'000;
 
 class EarClipper {
  public:
-  explicit EarClipper(std::vector<Point2> points) : points_(std::move(points)) {
+  EarClipper(std::vector<Point2> points, int64_t budget)
+      : points_(std::move(points)), budget_(budget) {
     const size_t n = points_.size();
     next_.resize(n);
     prev_.resize(n);
@@ -71,6 +74,8 @@ class EarClipper {
     }
     remaining_ = n;
   }
+
+  int64_t BudgetLeft() const { return budget_; }
 
   // Emits triangles of local (kept-list) indices.
   template <typename Emit>
@@ -137,12 +142,18 @@ class EarClipper {
   std::vector<uint32_t> next_;
   std::vector<uint32_t> prev_;
   size_t remaining_ = 0;
-  mutable int64_t budget_ = kPointTestBudget;
+  mutable int64_t budget_;
 };
 
 }  // namespace
 
-void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangle>& trianglesOut) {
+int64_t ModelPointTestBudget(size_t cornerCount) {
+  constexpr int64_t kPerCorner = 32;
+  return kPointTestBudget + kPerCorner * static_cast<int64_t>(cornerCount);
+}
+
+void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangle>& trianglesOut,
+                        int64_t* modelBudget) {
   // A triangle of three distinct consecutive corners: what the ear clipper
   // below gives for it (its one ear, emitted from the last corner), without
   // the allocations.
@@ -156,10 +167,13 @@ void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangl
   Vec3 normal = NewellNormal(kept.size(), [&](size_t i) { return corners[kept[i]]; });
   if (!IsFinite(normal)) return;
   if (normal == Vec3{}) normal = {0, 0, 1};  // all collinear: any plane, triangles are empty
-  EarClipper clipper(ProjectToDominantPlane(corners, kept, normal));
+  const int64_t budget =
+      modelBudget != nullptr ? std::min(kPointTestBudget, *modelBudget) : kPointTestBudget;
+  EarClipper clipper(ProjectToDominantPlane(corners, kept, normal), budget);
   clipper.Run([&](uint32_t a, uint32_t b, uint32_t c) {
     trianglesOut.push_back({kept[a], kept[b], kept[c]});
   });
+  if (modelBudget != nullptr) *modelBudget -= budget - std::max<int64_t>(clipper.BudgetLeft(), 0);
 }
 
 }  // namespace termshade

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -18,7 +19,14 @@ using CornerTriangle = std::array<uint32_t, 3>;
 /// then gives n - 2 triangles using every boundary edge once. Never loops
 /// forever: each step clips one corner, falling back to collinear and then to
 /// the most convex corner when the polygon is not simple, and to corners in
-/// order once a work budget (5e7 point tests) is spent.
-void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangle>& trianglesOut);
+/// order once a work budget (5e7 point tests) is spent. modelBudget, when
+/// given, is the point tests left for the whole model (shared by its faces,
+/// lowered by what this one spends): a polygon gets no more than it holds.
+void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangle>& trianglesOut,
+                        int64_t* modelBudget = nullptr);
+
+/// Point tests a model's triangulation may spend in all: 5e7 and 32 a
+/// corner (a model of 20,000 1000-gons would otherwise take 1e12).
+int64_t ModelPointTestBudget(size_t cornerCount);
 
 }  // namespace termshade

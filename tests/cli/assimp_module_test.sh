@@ -128,9 +128,9 @@ clean_error "a helper that sends garbage" "the import helper sent a broken resul
 hostile_helper "printf 'R\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\001\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\000\\020' >&3"
 run_alone "$work/cube.off"
 clean_error "a helper that promises 2^60 vertices" "an array longer than allowed" $?
-# The processor limit the helper is given (its second argument):
+# The processor limit the helper is given (its third argument):
 # --import-seconds, else TERMSHADE_IMPORT_SECONDS, else 30 s and 1 s a MiB.
-hostile_helper "echo \"\$2\" >'$work/cpu-seconds'"
+hostile_helper "echo \"\$3\" >'$work/cpu-seconds'"
 limit_given() {  # limit_given [ENV=VALUE] [OPTION...]: the limit the helper saw
   rm -f "$work/cpu-seconds"
   env "$@" >/dev/null 2>&1 </dev/null

@@ -224,6 +224,89 @@ expect hostile_argv0_help_escaped bash -c "! grep -q $'\x1b' '$work/out'"
 check bench_terminal_missing_model 1 "cannot open" -- "$bin" bench terminal "$work/NONEXISTENT"
 check refused_reference 1 "refused to read '/etc/passwd'" -- "$bin" render "$src/tests/models/bad/obj_mtllib_absolute_path.obj"
 
+# Output through links, devices and standard output (issue 32, items 1, 9, 11).
+echo original >"$work/real.txt"
+ln -s real.txt "$work/link.txt"
+check output_through_symlink 0 "" -- "$bin" render "$src/data/cube.dat" -o "$work/link.txt" --size 10x4
+expect output_through_symlink_keeps_the_link test -L "$work/link.txt"
+expect output_through_symlink_writes_its_target test "$(wc -l <"$work/real.txt")" -eq 4
+ln -s link.txt "$work/link2.txt"
+check output_through_two_symlinks 0 "" -- "$bin" render "$src/data/cube.dat" -o "$work/link2.txt" --size 10x3
+expect output_through_two_symlinks_keeps_both bash -c "test -L '$work/link2.txt' && test -L '$work/link.txt' && test \"\$(wc -l <'$work/real.txt')\" -eq 3"
+expect output_through_symlink_leaves_no_temporary_file test "$(ls -A "$work" | grep -c '^\.\(real\|link\)')" -eq 0
+ln -s new_target.txt "$work/dangling.txt"
+check output_through_dangling_symlink 0 "" -- "$bin" render "$src/data/cube.dat" -o "$work/dangling.txt" --size 10x4
+expect output_through_dangling_symlink_creates_target bash -c "test -L '$work/dangling.txt' && test \"\$(wc -l <'$work/new_target.txt')\" -eq 4"
+ln -s /dev/null "$work/null_link"
+check output_symlink_to_device 0 "" -- "$bin" render "$src/data/cube.dat" -o "$work/null_link"
+expect output_symlink_to_device_keeps_link bash -c "test -L '$work/null_link' && test -c /dev/null"
+ln -s loop_b "$work/loop_a"
+ln -s loop_a "$work/loop_b"
+check output_symlink_loop 1 "cannot write" -- "$bin" render "$src/data/cube.dat" -o "$work/loop_a"
+expect output_symlink_loop_keeps_links bash -c "test -L '$work/loop_a' && test -L '$work/loop_b'"
+# /dev/stdout's own link, made here: a broken build run as root would replace
+# the system's /dev/stdout (as the one of issue 32 did).
+ln -s /proc/self/fd/1 "$work/stdout_link"
+check output_dev_stdout 0 "" -- "$bin" render "$src/data/cube.dat" -o "$work/stdout_link" --size 10x4
+expect output_dev_stdout_reaches_stdout test "$(wc -l <"$work/out")" -eq 4
+expect output_dev_stdout_still_a_link test -L "$work/stdout_link"
+check output_proc_self_fd_1 0 "" -- "$bin" render "$src/data/cube.dat" -o /proc/self/fd/1 --size 10x5
+expect output_proc_self_fd_1_reaches_stdout test "$(wc -l <"$work/out")" -eq 5
+check output_proc_self_fd_1_pipe 0 "" -- bash -c "'$bin' render '$src/data/cube.dat' -o /proc/self/fd/1 --size 10x6 | wc -l | grep -qx 6"
+# stdout onto a file deleted after it was opened: no folder to replace it in, written in place, said why.
+check output_proc_self_fd_1_deleted 0 "written in place" -- bash -c "exec 3>'$work/deleted.txt'; rm '$work/deleted.txt'; '$bin' render '$src/data/cube.dat' -o /proc/self/fd/3 --size 10x7; wc -l </proc/self/fd/3 | grep -qx 7"
+check output_dash_is_stdout 0 "" -- bash -c "cd '$work' && '$bin' render '$src/data/cube.dat' -o - --size 10x4"
+expect output_dash_is_stdout_lines test "$(wc -l <"$work/out")" -eq 4
+expect output_dash_writes_no_file test ! -e "$work/-"
+check output_empty_name 2 "--output" -- "$bin" render "$src/data/cube.dat" -o ''
+check generate_output_empty_name 2 "--output" -- "$bin" generate wedge -o ''
+check generate_output_dash 0 "" -- bash -c "cd '$work' && '$bin' generate wedge -o -"
+expect generate_output_dash_is_stdout cmp -s "$work/out" "$src/data/wedge.dat"
+echo original >"$work/gen_real.dat"
+ln -s gen_real.dat "$work/gen_link.dat"
+check generate_through_symlink 0 "" -- "$bin" generate wedge -o "$work/gen_link.dat"
+expect generate_through_symlink_keeps_link bash -c "test -L '$work/gen_link.dat' && cmp -s '$work/gen_real.dat' '$src/data/wedge.dat'"
+
+# A closed or failing standard output ends the run at the first failed write (item 7).
+check closed_stdout 1 "standard output" -- timeout 20 bash -c "exec '$bin' render '$src/data/cube.dat' --size 4096x2048 --frames 100000 >&-"
+check broken_pipe_sigpipe_ignored 1 "Broken pipe" -- timeout 20 bash -c "trap '' PIPE; '$bin' render '$src/data/cube.dat' --size 200x100 --frames 100000 | head -c 1 >/dev/null; exit \${PIPESTATUS[0]}"
+check closed_stdout_generate 1 "standard output" -- timeout 20 bash -c "exec '$bin' generate wedge >&-"
+
+# Frames are strict JSON whatever the step; steps past 1e6 radians are refused (item 8).
+check json_huge_step_refused 2 "--step" -- "$bin" render "$src/data/cube.dat" --step 1e308 --frames 3 --format json --size 10x4
+check json_big_step 0 "" -- "$bin" render "$src/data/cube.dat" --step 1e6 --frames 3 --format json --size 10x4
+expect json_big_step_is_strict_json python3 -c 'import json, sys
+text = open(sys.argv[1]).read()
+decoder, at, frames = json.JSONDecoder(), 0, 0
+reject = lambda name: (_ for _ in ()).throw(ValueError(name))
+while text[at:].strip():
+    while text[at].isspace(): at += 1
+    frame, at = json.JSONDecoder(parse_constant=reject).raw_decode(text, at)
+    frames += 1
+sys.exit(frames != 3)' "$work/out"
+
+# Environment values checked as their options are: exit 2, the variable named, escaped (item 10).
+for value in 1x -1 99999T 0 $'\e[31m'; do
+  check "bad_memory_budget_environment_$(printf %q "$value" | tr -dc 'a-zA-Z0-9-')" 2 "TERMSHADE_MEMORY_BUDGET" -- env TERMSHADE_MEMORY_BUDGET="$value" "$bin" render "$src/data/cube.dat"
+done
+expect bad_environment_escaped bash -c "! grep -q $'\x1b' '$work/err' && grep -qF '\x1B[31m' '$work/err'"
+for value in 0 -5 1.5 86401 x; do
+  check "bad_import_seconds_environment_$value" 2 "TERMSHADE_IMPORT_SECONDS" -- env TERMSHADE_IMPORT_SECONDS="$value" "$bin" render "$src/data/cube.dat"
+done
+check good_import_seconds_environment 0 "" -- env TERMSHADE_IMPORT_SECONDS=5 "$bin" render "$src/data/cube.dat" --size 10x4
+check bad_environment_viewer 2 "TERMSHADE_MEMORY_BUDGET" -- env TERMSHADE_MEMORY_BUDGET=lots "$bin" "$src/data/cube.dat"
+
+# Smaller (item 11): --input-format names a known format; generate checks
+# its arguments before any work; leading zeros are no reason to refuse a size.
+check unknown_input_format 2 "known: " -- "$bin" render - --input-format xyz
+expect unknown_input_format_lists_obj grep -q ' obj ' "$work/err"
+check unknown_input_format_escaped 2 "--input-format" -- "$bin" render "$src/data/cube.dat" --input-format $'\e[2J'
+expect unknown_input_format_escaped_no_escape bash -c "! grep -q $'\x1b' '$work/err'"
+check input_format_with_dot 0 "" -- bash -c "'$bin' render - --input-format .OBJ --size 20x8 <'$src/tests/models/good/quad_and_triangle.obj'"
+check generate_bad_extension_first 2 "extension" -- timeout 5 "$bin" generate sphere --triangles 50000000 -o /dev/null
+check size_leading_zeros 0 "" -- "$bin" render "$src/data/cube.dat" --size 0000000080x0000000024
+expect size_leading_zeros_is_80x24 test "$(awk 'length($0) == 80' "$work/out" | wc -l)" -eq 24
+
 # Bad usage: exit 2.
 check unknown_method 2 "--method" -- "$bin" render "$src/data/cube.dat" --method foo
 check bad_size 2 "--size" -- "$bin" render "$src/data/cube.dat" --size 0x5

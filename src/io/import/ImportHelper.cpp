@@ -14,7 +14,7 @@
 
 namespace termshade {
 
-void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t cpuSeconds) {
+void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t dataBytes, uint64_t cpuSeconds) {
   const rlimit noCore{0, 0};
   setrlimit(RLIMIT_CORE, &noCore);
   if (cpuSeconds > 0) {
@@ -24,6 +24,10 @@ void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t cpuSeconds) {
   if (addressSpaceBytes > 0 && !kAddressSanitizerBuild) {
     const rlimit space{addressSpaceBytes, addressSpaceBytes};
     setrlimit(RLIMIT_AS, &space);
+  }
+  if (dataBytes > 0 && !kAddressSanitizerBuild) {
+    const rlimit data{dataBytes, dataBytes};
+    setrlimit(RLIMIT_DATA, &data);
   }
 }
 

@@ -4,10 +4,11 @@
 
 namespace termshade {
 
-/// Sets this process's limits for one import: address space (not in
-/// AddressSanitizer builds, which reserve terabytes of it; 0: none), processor
+/// Sets this process's limits for one import: address space and data (heap
+/// and private writable mappings: what the importer allocates; neither in
+/// AddressSanitizer builds, which reserve terabytes; 0: none), processor
 /// seconds (SIGXCPU at the limit, SIGKILL a second later) and no core files.
-void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t cpuSeconds);
+void LimitImportProcess(uint64_t addressSpaceBytes, uint64_t dataBytes, uint64_t cpuSeconds);
 
 /// The import helper's work (termshade-import, io/import/IsolatedImport.h): reads
 /// one request from requestFd, imports it with Assimp in this process (the

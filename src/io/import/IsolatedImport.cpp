@@ -94,10 +94,12 @@ pid_t SpawnHelper(const std::string& path, int requestFd, int frameFd, const Imp
   posix_spawnattr_setflags(&attributes,
                            POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSID);
   std::string space = std::to_string(limits.addressSpaceBytes);
+  std::string data = std::to_string(limits.dataBytes);
   std::string seconds = std::to_string(limits.cpuSeconds);
   std::string parent = std::to_string(getpid());
   std::string program = path;
-  char* argv[] = {program.data(), space.data(), seconds.data(), parent.data(), nullptr};
+  char* argv[] = {program.data(), space.data(),  data.data(),
+                  seconds.data(), parent.data(), nullptr};
   pid_t pid = -1;
   const int failed = posix_spawn(&pid, path.c_str(), &actions, &attributes, argv, environ);
   posix_spawnattr_destroy(&attributes);
@@ -239,6 +241,7 @@ ImportLimits ImportLimitsFor(size_t fileBytes, const LoadOptions& options) {
   constexpr uint64_t kBaseSeconds = 30;
   ImportLimits limits;
   limits.addressSpaceBytes = options.memoryBudgetBytes + kHelperBytes;
+  limits.dataBytes = options.memoryBudgetBytes + kHelperDataBytes;
   limits.cpuSeconds = options.importCpuSeconds > 0
                           ? options.importCpuSeconds
                           : kBaseSeconds + static_cast<uint64_t>(fileBytes >> 20);

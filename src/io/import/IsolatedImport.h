@@ -14,10 +14,17 @@ namespace termshade {
 /// The import helper's file name, found where the module is (io/import/OwnFile.h).
 inline constexpr const char* kImportHelperName = "termshade-import";
 
+/// The helper's own heap beyond the budget (its libraries' data, the request
+/// and wire buffers): the documented constant of the budget's promise.
+inline constexpr uint64_t kHelperDataBytes = uint64_t{32} << 20;
+
 /// What one import in the helper may take.
 struct ImportLimits {
   uint64_t addressSpaceBytes = 0;  ///< the memory budget and 1 GiB for the helper itself
-  uint64_t cpuSeconds = 0;         ///< options.importCpuSeconds, else 30 s and 1 s a MiB of file
+  /// What the importer may allocate (RLIMIT_DATA): the memory budget and
+  /// kHelperDataBytes, so the helper's peak stays within them.
+  uint64_t dataBytes = 0;
+  uint64_t cpuSeconds = 0;  ///< options.importCpuSeconds, else 30 s and 1 s a MiB of file
 };
 ImportLimits ImportLimitsFor(size_t fileBytes, const LoadOptions& options);
 

@@ -48,6 +48,14 @@ std::string Normalized(std::string format) {
   return format;
 }
 
+size_t LargestFaceCorners(const Mesh& mesh) {
+  size_t largest = 0;
+  for (size_t face = 0; face < mesh.FaceCount(); ++face) {
+    largest = std::max(largest, mesh.Face(face).size());
+  }
+  return largest;
+}
+
 // Where a model was read from, and what its references may reach.
 struct ModelPlace {
   std::string displayName;  ///< as the user gave it
@@ -115,7 +123,8 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
       const Mesh& read = mesh->Value();
       const size_t needed =
           std::max(*ownNeeds, EstimatePreparedBytes(fileBytes, read.verticesFile.size(),
-                                                    read.faceCorners.size(), read.FaceCount()));
+                                                    read.faceCorners.size(), read.FaceCount(),
+                                                    LargestFaceCorners(read)));
       if (overBudget(needed)) return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
       return std::move(*mesh);
     }
@@ -226,9 +235,22 @@ Loaded<Mesh> WithAFaceToDraw(Loaded<Mesh> mesh) {
                    faces + " no area (corners on a line or at a point): nothing to draw"};
 }
 
-// What every load returns: a mesh the renderer can draw, or why not.
-Loaded<Mesh> Drawable(Loaded<Mesh> mesh) {
-  return WithAFaceToDraw(WithDrawableSize(std::move(mesh)));
+// Whatever read it (a .dat, our readers, the import), the mesh's
+// preparation and first frame against the budget, with its real counts and
+// its largest face, before PrepareScene allocates anything.
+Loaded<Mesh> WithinPreparedBudget(Loaded<Mesh> mesh, const LoadOptions& options) {
+  if (!mesh.Ok()) return mesh;
+  const Mesh& m = mesh.Value();
+  const size_t needed = EstimatePreparedBytes(0, m.verticesFile.size(), m.faceCorners.size(),
+                                              m.FaceCount(), LargestFaceCorners(m));
+  if (needed <= options.memoryBudgetBytes) return mesh;
+  return LoadError{m.name, 0, 0,
+                   OverBudgetMessage(static_cast<double>(needed), options.memoryBudgetBytes)};
+}
+
+// What every load returns: a mesh the renderer can draw within the budget, or why not.
+Loaded<Mesh> Drawable(Loaded<Mesh> mesh, const LoadOptions& options) {
+  return WithinPreparedBudget(WithAFaceToDraw(WithDrawableSize(std::move(mesh))), options);
 }
 
 Loaded<Mesh> LoadFileBytes(FileBytes bytes, const std::string& path, const LoadOptions& options);
@@ -239,8 +261,8 @@ Loaded<Mesh> LoadChecked(const std::string& path, const LoadOptions& options) {
     if (isatty(STDIN_FILENO) != 0) {
       return LoadError{"-", 0, 0, "standard input is a terminal; pipe a model into it"};
     }
-    Loaded<std::string> bytes =
-        ReadStream(STDIN_FILENO, "-", options.memoryBudgetBytes, options.cancel);
+    Loaded<std::string> bytes = ReadStream(
+        STDIN_FILENO, "-", LargestLoadableBytes(options.memoryBudgetBytes), options.cancel);
     if (!bytes.Ok()) return bytes.Error();
     return LoadBytes(FileBytes(std::move(bytes.Value())), ModelPlace{"-", "", ""}, options);
   }
@@ -274,7 +296,8 @@ bool UsesImporter(const std::string& path) {
 Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
                             const LoadOptions& options) {
   try {
-    return Drawable(LoadBytes(FileBytes(std::move(bytes)), ModelPlace{name, "", ""}, options));
+    return Drawable(LoadBytes(FileBytes(std::move(bytes)), ModelPlace{name, "", ""}, options),
+                    options);
   } catch (const std::bad_alloc&) {
     return LoadError{name, 0, 0, "ran out of memory while loading"};
   } catch (const std::exception& e) {
@@ -285,7 +308,7 @@ Loaded<Mesh> LoadModelBytes(std::string bytes, const std::string& name,
 Loaded<Mesh> LoadModelFileBytes(FileBytes bytes, const std::string& path,
                                 const LoadOptions& options) {
   try {
-    return Drawable(LoadFileBytes(std::move(bytes), path, options));
+    return Drawable(LoadFileBytes(std::move(bytes), path, options), options);
   } catch (const std::bad_alloc&) {
     return LoadError{path, 0, 0, "ran out of memory while loading"};
   } catch (const std::exception& e) {
@@ -295,7 +318,7 @@ Loaded<Mesh> LoadModelFileBytes(FileBytes bytes, const std::string& path,
 
 Loaded<Mesh> LoadModelFile(const std::string& path, const LoadOptions& options) {
   try {
-    return Drawable(LoadChecked(path, options));
+    return Drawable(LoadChecked(path, options), options);
   } catch (const std::bad_alloc&) {
     return LoadError{path, 0, 0,
                      "ran out of memory while loading (the memory budget is " +

@@ -212,7 +212,22 @@ size_t EstimateLeastLoadBytes(size_t fileBytes) {
   return std::min(EstimateImportBytes("dat", fileBytes), *EstimateOwnReaderBytes("stl", fileBytes));
 }
 
-size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces) {
+size_t LargestLoadableBytes(size_t budgetBytes) {
+  size_t low = 0, high = budgetBytes;  // the least load of `low` bytes fits
+  if (EstimateLeastLoadBytes(0) > budgetBytes) return 0;
+  while (low < high) {
+    const size_t middle = low + (high - low + 1) / 2;
+    if (EstimateLeastLoadBytes(middle) <= budgetBytes) {
+      low = middle;
+    } else {
+      high = middle - 1;
+    }
+  }
+  return low;
+}
+
+size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces,
+                             size_t largestFaceCorners) {
   const auto v = static_cast<double>(vertices), c = static_cast<double>(corners),
              f = static_cast<double>(faces);
   const double triangles = std::max(0.0, c - 2 * f);
@@ -224,10 +239,18 @@ size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, 
   // Preparation at its peak: world vertices, corners, edge uses (8 / corner),
   // their per-vertex starts, orientation's per-face arrays (14 / face).
   const double prepare = 32 * v + 12 * c + 14 * f + keptFaces;
+  // Triangulation (faces other than triangles): world vertices, the faces
+  // (corners, hidden flags, starts), the triangles so far with their faces
+  // (16 / triangle, reserved at once) and the largest face's work arrays.
+  const double triangulate =
+      keptFaces == 0.0 ? 0.0
+                       : 24 * v + 5 * c + 4 * f + 16 * triangles +
+                             kTriangulateBytesPerCorner * static_cast<double>(largestFaceCorners);
   // Reading: the file and the mesh (vertices, corners with hidden flags, starts).
   const double read = static_cast<double>(fileBytes) + 24 * v + 5 * c + 4 * f;
   constexpr double kBaseBytes = 16.0 * (1 << 20);
-  return static_cast<size_t>(std::min(kBaseBytes + std::max({read, frame, prepare}), 1e18));
+  return static_cast<size_t>(
+      std::min(kBaseBytes + std::max({read, frame, prepare, triangulate}), 1e18));
 }
 
 size_t EstimateMeshBytes(size_t vertices, size_t corners, size_t faces) {
@@ -261,7 +284,9 @@ std::optional<size_t> ParseByteCount(std::string_view text) {
   }
   if (!suffix.empty()) return std::nullopt;
   const double bytes = value * scale;
-  if (bytes < 1 || bytes > 1e18) return std::nullopt;
+  // Past 64 TiB no budget means anything (x86-64 user space is 128 TiB).
+  constexpr double kMostBytes = 64.0 * 1099511627776.0;
+  if (bytes < 1 || bytes > kMostBytes) return std::nullopt;
   return static_cast<size_t>(bytes);
 }
 

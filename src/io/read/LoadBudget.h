@@ -26,19 +26,31 @@ std::optional<size_t> EstimateOwnReaderBytes(std::string_view format, size_t fil
 /// before it is read.
 size_t EstimateLeastLoadBytes(size_t fileBytes);
 
+/// The largest file whose least load (EstimateLeastLoadBytes) fits in
+/// budgetBytes: how much of a stream (standard input) may be held.
+size_t LargestLoadableBytes(size_t budgetBytes);
+
 /// Bytes a mesh of this size takes once loaded and prepared for rendering.
 size_t EstimateMeshBytes(size_t vertices, size_t corners, size_t faces);
 
 /// Peak bytes reading a mesh of this size from fileBytes of file (held
 /// while it is read), preparing it and drawing its first frame take
-/// (PrepareScene's arrays, the renderer's buffers).
-size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces);
+/// (PrepareScene's arrays, the renderer's buffers); largestFaceCorners: the
+/// corners of its largest face, whose triangulation needs work arrays of
+/// its own (kTriangulateBytesPerCorner a corner).
+size_t EstimatePreparedBytes(size_t fileBytes, size_t vertices, size_t corners, size_t faces,
+                             size_t largestFaceCorners = 3);
+
+/// Work bytes the triangulation of one face takes per corner (Triangulate.h:
+/// the corners' positions, kept list, projected points, links, triangles).
+inline constexpr double kTriangulateBytesPerCorner = 72;
 
 /// The message for a model that needs more memory than the budget allows.
 std::string OverBudgetMessage(double neededBytes, size_t budgetBytes);
 
 /// Parses a byte count with an optional K, M, G or T suffix (powers of 1024,
-/// optionally followed by "iB" or "B"): "4G", "512M", "1.5GiB", "1000000".
+/// optionally followed by "iB" or "B"): "4G", "512M", "1.5GiB", "1000000";
+/// 1 byte to 64 TiB, else nullopt.
 std::optional<size_t> ParseByteCount(std::string_view text);
 
 }  // namespace termshade

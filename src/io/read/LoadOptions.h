@@ -4,18 +4,30 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace termshade {
 
 /// The memory budget when none is given: TERMSHADE_MEMORY_BUDGET ("4G",
-/// "512M", bytes; see ParseByteCount in io/read/LoadBudget.h) if set and valid, else 2 GiB.
+/// "512M", bytes; see ParseByteCount in io/read/LoadBudget.h) if set and
+/// valid, else 2 GiB (front ends refuse an invalid one: LoadEnvironmentProblem).
 size_t DefaultMemoryBudgetBytes();
 
 /// The import helper's processor time when none is given:
 /// TERMSHADE_IMPORT_SECONDS (whole seconds, 1 to 86400) if set and valid,
 /// else 0 (30 s and 1 s a MiB of file; io/import/IsolatedImport.h).
 uint32_t DefaultImportCpuSeconds();
+
+/// Why TERMSHADE_MEMORY_BUDGET or TERMSHADE_IMPORT_SECONDS holds a value
+/// its option (--memory-budget, --import-seconds) would refuse: the
+/// variable's name, the value (not yet escaped for a terminal) and what is
+/// expected; nullopt when both are unset, empty or valid.
+std::optional<std::string> LoadEnvironmentProblem();
+
+/// Whole seconds 1 to 86400 (--import-seconds, TERMSHADE_IMPORT_SECONDS); nullopt otherwise.
+std::optional<uint32_t> ParseImportSeconds(std::string_view text);
 
 /// What a user sets for loads (--memory-budget, --import-seconds); 0: the default.
 struct LoadLimits {

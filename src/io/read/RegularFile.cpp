@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <memory>
+#include <vector>
 
 #include "io/read/FileDescriptor.h"
 #include "process/HugePages.h"
@@ -98,20 +100,42 @@ Loaded<std::string> ReadRegularFile(
 
 Loaded<std::string> ReadStream(int fd, const std::string& name, size_t maxBytes,
                                const std::atomic<bool>* cancel) {
-  std::string text;
-  char chunk[65536];
+  // Read into pieces (1 MiB, doubling to 64 MiB, only the bytes read touched),
+  // joined once at the end: at most twice the input is held, never a
+  // doubling buffer's copies (which a heap that keeps freed memory would keep too).
+  struct Piece {
+    std::unique_ptr<char[]> bytes;
+    size_t capacity = 0;
+    size_t used = 0;
+  };
+  std::vector<Piece> pieces;
+  size_t total = 0;
+  constexpr size_t kFirstPieceBytes = size_t{1} << 20, kLargestPieceBytes = size_t{64} << 20;
   while (true) {
     if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return Cancelled(name);
-    const ssize_t got = read(fd, chunk, sizeof chunk);
+    if (pieces.empty() || pieces.back().used == pieces.back().capacity) {
+      const size_t size = pieces.empty() ? kFirstPieceBytes
+                                         : std::min(kLargestPieceBytes, 2 * pieces.back().capacity);
+      pieces.push_back({std::make_unique_for_overwrite<char[]>(size), size, 0});
+    }
+    Piece& piece = pieces.back();
+    const ssize_t got = read(fd, piece.bytes.get() + piece.used, piece.capacity - piece.used);
     if (got < 0 && errno == EINTR) continue;
     if (got < 0) return LoadError{name, 0, 0, std::string("cannot read: ") + std::strerror(errno)};
     if (got == 0) break;
-    if (text.size() + static_cast<size_t>(got) > maxBytes) {
+    piece.used += static_cast<size_t>(got);
+    total += static_cast<size_t>(got);
+    if (total > maxBytes) {
       return LoadError{name, 0, 0,
-                       "the input is more than the memory budget allows (" +
-                           FormatBytes(static_cast<double>(maxBytes)) + ")"};
+                       "the input is more than " + FormatBytes(static_cast<double>(maxBytes)) +
+                           ", the largest model the memory budget lets load"};
     }
-    text.append(chunk, static_cast<size_t>(got));
+  }
+  std::string text;
+  text.reserve(total);
+  for (Piece& piece : pieces) {
+    text.append(piece.bytes.get(), piece.used);
+    piece.bytes.reset();
   }
   return text;
 }

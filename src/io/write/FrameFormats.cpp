@@ -1,6 +1,8 @@
 #include "io/write/FrameFormats.h"
 
 #include <charconv>
+#include <cmath>
+#include <type_traits>
 
 #include "geometry/ViewingTransform.h"
 #include "shade/CellColour.h"
@@ -9,8 +11,15 @@
 namespace termshade {
 namespace {
 
+// Strict JSON has no inf or nan: a number that is not finite is null.
 template <typename Number>
 void AppendNumber(Number value, std::string& out) {
+  if constexpr (std::is_floating_point_v<Number>) {
+    if (!std::isfinite(value)) {
+      out += "null";
+      return;
+    }
+  }
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   out.append(buffer, result.ptr);

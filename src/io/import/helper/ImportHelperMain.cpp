@@ -27,9 +27,9 @@ bool ParseCount(const char* text, uint64_t& value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  uint64_t addressSpaceBytes = 0, cpuSeconds = 0, parent = 0;
-  if (argc != 4 || !ParseCount(argv[1], addressSpaceBytes) || !ParseCount(argv[2], cpuSeconds) ||
-      !ParseCount(argv[3], parent)) {
+  uint64_t addressSpaceBytes = 0, dataBytes = 0, cpuSeconds = 0, parent = 0;
+  if (argc != 5 || !ParseCount(argv[1], addressSpaceBytes) || !ParseCount(argv[2], dataBytes) ||
+      !ParseCount(argv[3], cpuSeconds) || !ParseCount(argv[4], parent)) {
     std::fputs("termshade-import: started by termshade to import one model; not for use alone\n",
                stderr);
     return 2;
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
   // Step 1: end with termshade, and take no more than it allows.
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (static_cast<uint64_t>(getppid()) != parent) return 1;  // it ended before that took hold
-  termshade::LimitImportProcess(addressSpaceBytes, cpuSeconds);
+  termshade::LimitImportProcess(addressSpaceBytes, dataBytes, cpuSeconds);
   // Step 2: the import.
   return termshade::ServeImportRequest(STDIN_FILENO, 3);
 }
