@@ -51,7 +51,9 @@ std::vector<uint32_t> SeenVertices(const Mesh& mesh, const SnapshotFrame& defaul
 std::string Percent(int caught, int trials) {
   if (trials == 0) return "-";
   char text[16];
-  std::snprintf(text, sizeof text, "%.0f%%", 100.0 * caught / trials);
+  // Never "100%" for 219 of 220, nor "0%" for 1 of 220.
+  const double percent = 100.0 * caught / trials;
+  std::snprintf(text, sizeof text, caught > 0 && caught < trials ? "%.1f%%" : "%.0f%%", percent);
   return text;
 }
 
@@ -140,7 +142,8 @@ int RunSnapshotBench(const SnapshotBenchOptions& options) {
     std::snprintf(share, sizeof share, "%g", options.moveShares[s]);
     std::cout << "| " << share << " |";
     for (size_t t = 0; t < tolerances.size(); ++t) {
-      std::cout << " " << Percent(caught[s][t], trialsAt[s]) << " |";
+      std::cout << " " << Percent(caught[s][t], trialsAt[s]) << " (" << caught[s][t] << "/"
+                << trialsAt[s] << ") |";
     }
     std::cout << "\n";
   }
