@@ -119,6 +119,26 @@ std::optional<std::string> Contradiction(const RenderCommandOptions& render,
   return problem;
 }
 
+// An existing golden's options, with those given on the command line in
+// their place (--update keeps what the command line does not say).
+SnapshotSettings WithGivenOptions(SnapshotSettings base, const SnapshotSettings& given,
+                                  const CLI::App& command) {
+  const auto isGiven = [&](const char* option) { return command.count(option) > 0; };
+  if (isGiven("--size")) {
+    base.widthCells = given.widthCells;
+    base.heightCells = given.heightCells;
+  }
+  if (isGiven("--cell-aspect")) base.cellAspect = given.cellAspect;
+  if (isGiven("--theta")) base.theta = given.theta;
+  if (isGiven("--phi")) base.phi = given.phi;
+  if (isGiven("--method")) base.method = given.method;
+  if (isGiven("--shade")) base.shade = given.shade;
+  if (isGiven("--glyphs")) base.glyphs = given.glyphs;
+  if (isGiven("--ramp")) base.ramp = given.ramp;
+  if (isGiven("--no-cull")) base.cullBackFaces = given.cullBackFaces;
+  return base;
+}
+
 std::optional<std::string> WriteWhole(const std::string& path, const std::string& text) {
   OutputFile file(path);
   if (auto problem = file.Open()) return problem;
@@ -187,18 +207,21 @@ int RunSnapshotCommand(const RenderCommandOptions& render, const SnapshotCommand
     return Usage("--expect " + goldenPath + " is the model itself");
   }
 
-  // Step 2: the golden, whose options make the frames; options that say otherwise are refused.
+  // Step 2: the golden, whose options make the frames. Options that say
+  // otherwise are refused, unless --update: then they replace the golden's.
   bool haveGolden = false;
-  if (!update) {
-    struct stat info {};
-    if (stat(goldenPath.c_str(), &info) != 0 && errno == ENOENT) {
-      haveGolden = false;
-    } else {
-      Loaded<SnapshotGolden> read = ReadSnapshotGolden(goldenPath);
-      if (!read.Ok()) {
-        std::cerr << read.Error().ToString(true) << "\n";
-        return 1;
-      }
+  struct stat info {};
+  if (stat(goldenPath.c_str(), &info) == 0 || errno != ENOENT) {
+    Loaded<SnapshotGolden> read = ReadSnapshotGolden(goldenPath);
+    if (!read.Ok() && !update) {
+      std::cerr << read.Error().ToString(true) << "\n";
+      return 1;
+    }
+    if (read.Ok() && update) {
+      golden.settings = WithGivenOptions(read.Value().settings, golden.settings, renderCommand);
+      golden.settings.views = views ? *views : read.Value().settings.views;
+      if (renderCommand.count("--up") == 0) golden.upAxis = read.Value().upAxis;
+    } else if (read.Ok()) {
       if (const auto problem = Contradiction(render, render.upAxis, read.Value(), renderCommand)) {
         return Usage(*problem + " (drop the option, or pass --update to rewrite the golden)");
       }

@@ -87,6 +87,12 @@ check contradicting_with_update 0 "" -- \
 expect update_records_new_options grep -q '^size 60x20$' "$golden"
 expect update_records_glyphs grep -q '^glyphs sextants$' "$golden"
 check rerender_with_golden_options 0 "" -- "$bin" render "$work/cube.dat" --expect "$golden"
+check update_keeps_golden_options 0 "wrote" -- env TERMSHADE_UPDATE=1 "$bin" render "$work/cube.dat" --expect "$golden" --theta 0.5
+expect update_kept_size grep -q '^size 60x20$' "$golden"
+expect update_kept_views grep -q '^views default top$' "$golden"
+expect update_took_theta grep -q '^theta 0.5$' "$golden"
+printf 'not a golden\n' >"$work/broken.snap"
+check update_replaces_unreadable_golden 0 "wrote" -- "$bin" render "$work/cube.dat" --expect "$work/broken.snap" --update
 check update_without_expect 2 "--update needs --expect" -- "$bin" render "$work/cube.dat" --update
 check expect_with_output 2 "--output cannot be used with --expect" -- \
   "$bin" render "$work/cube.dat" --expect "$golden" -o "$work/x.txt"
