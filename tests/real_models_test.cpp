@@ -1,7 +1,8 @@
 // Real models as users have them (tests/models/real, licences in LICENCES.md):
 // each drawn upright at the default view, as a golden text frame, and in the
 // file's own colours, as a golden ansi (24-bit) frame.
-// Set TERMSHADE_UPDATE=1 (or TERMSHADE_UPDATE_GOLDEN=1) to rewrite the frames after a deliberate change.
+// Set TERMSHADE_UPDATE=1 (or TERMSHADE_UPDATE_GOLDEN=1) to rewrite the frames after a deliberate
+// change.
 #include <gtest/gtest.h>
 
 #include <cstdlib>

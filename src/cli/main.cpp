@@ -437,8 +437,9 @@ int Run(int argc, char** argv) {
                                "model files (default: data/*.dat and a few corpus models)");
   snapshotsCommand->add_option("--trials", snapshotBench.trials, "moves per model and size (20)")
       ->check(CLI::Range(1, 10000));
-  snapshotsCommand->add_option("--moves", snapshotBench.moveShares,
-                               "move sizes, shares of the diagonal (1e-5 1e-4 1e-3 3e-3 1e-2 3e-2)");
+  snapshotsCommand->add_option(
+      "--moves", snapshotBench.moveShares,
+      "move sizes, shares of the diagonal (1e-5 1e-4 1e-3 3e-3 1e-2 3e-2)");
   snapshotsCommand->add_option("--tolerances", snapshotBench.tolerances,
                                "--tolerance values to compare (0 10 100 1%)");
   snapshotsCommand
