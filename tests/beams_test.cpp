@@ -40,7 +40,8 @@ DumpComparison CompareJsonDump(const Scene& scene, Method method, double theta, 
     for (int row = 0; row < 3; ++row) {
       const double actual = double(m[4 * row]) * p.x + double(m[4 * row + 1]) * p.y +
                             double(m[4 * row + 2]) * p.z + double(m[4 * row + 3]);
-      EXPECT_NEAR(actual, row == 0 ? expected.x : (row == 1 ? expected.y : expected.z), 1e-12);
+      // 12 significant digits (FrameFormats.h): the same dump on every CPU.
+      EXPECT_NEAR(actual, row == 0 ? expected.x : (row == 1 ? expected.y : expected.z), 1e-9);
     }
   }
 

@@ -1,5 +1,6 @@
 // Golden text frames: every scene in data/, every method, three views.
-// Set TERMSHADE_UPDATE_GOLDEN=1 to rewrite them after a deliberate change.
+// Set TERMSHADE_UPDATE=1 (or TERMSHADE_UPDATE_GOLDEN=1) to rewrite them after a
+// deliberate change; a failure prints the diff `render --expect` prints.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -7,6 +8,7 @@
 
 #include "io/scenes/SceneGenerators.h"
 #include "io/write/DatWriter.h"
+#include "support/GoldenFile.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -33,21 +35,13 @@ class GoldenFrames : public testing::TestWithParam<std::string> {};
 
 TEST_P(GoldenFrames, MatchEveryMethodAndView) {
   const Scene scene = test::LoadScene("data/" + GetParam() + ".dat");
-  const bool update = std::getenv("TERMSHADE_UPDATE_GOLDEN") != nullptr;
   for (Method method : kMethods) {
     for (const GoldenView& view : kViews) {
       RenderOptions options;
       options.method = method;
       const std::string actual =
           test::RenderFrame(scene, view.theta, view.phi, 80, 24, options).Text();
-      const std::string path = GoldenPath(GetParam(), method, view);
-      if (update) {
-        std::ofstream(path, std::ios::binary) << actual;
-        continue;
-      }
-      const std::string expected = ReadFile(path);
-      EXPECT_EQ(expected, actual) << "golden frame " << path << " differs; the actual frame:\n"
-                                  << actual << "(run with TERMSHADE_UPDATE_GOLDEN=1 to accept)";
+      test::ExpectTextGolden(GoldenPath(GetParam(), method, view), actual);
     }
   }
 }
@@ -63,7 +57,6 @@ class GlyphGoldenFrames : public testing::TestWithParam<std::string> {};
 
 TEST_P(GlyphGoldenFrames, MatchEveryGlyphMode) {
   const Scene scene = test::LoadScene("data/" + GetParam() + ".dat");
-  const bool update = std::getenv("TERMSHADE_UPDATE_GOLDEN") != nullptr;
   for (GlyphMode mode : {GlyphMode::kAscii, GlyphMode::kBlocks, GlyphMode::kQuadrants,
                          GlyphMode::kSextants, GlyphMode::kBraille}) {
     for (bool twoColour : {false, true}) {
@@ -76,13 +69,7 @@ TEST_P(GlyphGoldenFrames, MatchEveryGlyphMode) {
       const std::string path =
           SourcePath("tests/golden/" + GetParam() + ".glyphs-" + std::string(GlyphModeName(mode)) +
                      (twoColour ? ".colour" : "") + ".txt");
-      if (update) {
-        std::ofstream(path, std::ios::binary) << actual;
-        continue;
-      }
-      EXPECT_EQ(ReadFile(path), actual)
-          << "golden frame " << path << " differs; the actual frame:\n"
-          << actual << "(run with TERMSHADE_UPDATE_GOLDEN=1 to accept)";
+      test::ExpectTextGolden(path, actual);
     }
   }
 }

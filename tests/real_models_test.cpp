@@ -1,7 +1,8 @@
 // Real models as users have them (tests/models/real, licences in LICENCES.md):
 // each drawn upright at the default view, as a golden text frame, and in the
 // file's own colours, as a golden ansi (24-bit) frame.
-// Set TERMSHADE_UPDATE_GOLDEN=1 to rewrite the frames after a deliberate change.
+// Set TERMSHADE_UPDATE=1 (or TERMSHADE_UPDATE_GOLDEN=1) to rewrite the frames after a deliberate
+// change.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <optional>
 
 #include "io/write/FrameFormats.h"
+#include "support/GoldenFile.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -36,14 +38,7 @@ std::string Stem(const std::string& file) {
 }
 
 void ExpectGolden(const std::string& name, const std::string& actual) {
-  const std::string path = test::SourcePath("tests/golden/" + name);
-  if (std::getenv("TERMSHADE_UPDATE_GOLDEN") != nullptr) {
-    std::ofstream(path, std::ios::binary) << actual;
-    return;
-  }
-  EXPECT_EQ(test::ReadFile(path), actual)
-      << "golden frame " << path << " differs; the actual frame:\n"
-      << actual << "(run with TERMSHADE_UPDATE_GOLDEN=1 to accept)";
+  test::ExpectTextGolden(test::SourcePath("tests/golden/" + name), actual);
 }
 
 class RealModelFrames : public testing::TestWithParam<RealModel> {};

@@ -15,12 +15,14 @@
 #include "LoadBench.h"
 #include "MethodsBench.h"
 #include "ModelsBench.h"
+#include "SnapshotBench.h"
 #include "TerminalBench.h"
 #include "cli/ConfigFile.h"
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
 #include "cli/NumberChecks.h"
 #include "cli/RenderCommand.h"
+#include "cli/SnapshotCheck.h"
 #include "geometry/Angle.h"
 #include "geometry/UpAxis.h"
 #include "io/load/ModelLoader.h"
@@ -337,6 +339,8 @@ int Run(int argc, char** argv) {
                    "auto (default): dedicated readers for binary STL, PLY and OBJ, Assimp for "
                    "the rest; assimp: Assimp for everything (the reference)")
       ->check(CLI::IsMember({"auto", "assimp"}));
+  termshade::SnapshotCommandOptions snapshot;
+  termshade::AddSnapshotOptions(*renderCommand, snapshot);
 
   // Scene files: termshade generate NAME [-o FILE]
   termshade::GenerateCommandOptions generate;
@@ -489,6 +493,22 @@ int Run(int argc, char** argv) {
   fidelityCommand->add_flag("--timing-only", fidelityBench.timingOnly,
                             "frame times alone (interleaved): no fidelity, CSV or SVG");
 
+  termshade::SnapshotBenchOptions snapshotBench;
+  CLI::App* snapshotsCommand = benchCommand->add_subcommand(
+      "snapshots", "how often render --expect catches a vertex moved, by move size and tolerance");
+  snapshotsCommand->add_option("--models", snapshotBench.modelPaths,
+                               "model files (default: data/*.dat and a few corpus models)");
+  snapshotsCommand->add_option("--trials", snapshotBench.trials, "moves per model and size (20)")
+      ->check(CLI::Range(1, 10000));
+  snapshotsCommand->add_option(
+      "--moves", snapshotBench.moveShares,
+      "move sizes, shares of the diagonal (1e-5 1e-4 1e-3 3e-3 1e-2 3e-2)");
+  snapshotsCommand->add_option("--tolerances", snapshotBench.tolerances,
+                               "--tolerance values to compare (0 10 100 1%)");
+  snapshotsCommand
+      ->add_option("--data", snapshotBench.dataDirectory, "the scenes' directory (default data)")
+      ->type_name("DIR");
+
   termshade::AddExamples(app);
   bool done = false;
   const int parseCode =
@@ -504,11 +524,15 @@ int Run(int argc, char** argv) {
     return 0;
   }
   if (!generateWhat.empty()) return termshade::RunGenerate(app, TERMSHADE_VERSION, generateWhat);
-  if (renderCommand->parsed()) return termshade::RunRenderCommand(render);
+  if (renderCommand->parsed()) {
+    return snapshot.Requested() ? termshade::RunSnapshotCommand(render, snapshot, *renderCommand)
+                                : termshade::RunRenderCommand(render);
+  }
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
   if (frameCommand->parsed()) return termshade::RunFrameBench(frameBench);
   if (fidelityCommand->parsed()) return termshade::RunFidelityBench(fidelityBench);
+  if (snapshotsCommand->parsed()) return termshade::RunSnapshotBench(snapshotBench);
   if (terminalCommand->parsed()) {
     if (!terminalBench.modelPath.empty()) {  // a model that cannot load gives no meaningful table
       const termshade::Loaded<termshade::Mesh> mesh =

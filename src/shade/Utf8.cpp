@@ -24,6 +24,13 @@ int SafeCodePointCells(char32_t c) {
   return cells == 1 || cells == 2 ? cells : 0;
 }
 
+bool IsControlOrFormat(char32_t c) {
+  if (c < 0x20 || (c >= 0x7F && c < 0xA0) || c == 0xAD || c == 0x61C || c == 0x180E) return true;
+  return (c >= 0x200B && c <= 0x200F) || (c >= 0x2028 && c <= 0x202E) ||
+         (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF || (c >= 0xFFF9 && c <= 0xFFFB) ||
+         (c >= 0xE0000 && c <= 0xE007F);
+}
+
 std::optional<std::vector<char32_t>> DecodeUtf8(std::string_view text) {
   std::vector<char32_t> codePoints;
   for (size_t i = 0; i < text.size();) {

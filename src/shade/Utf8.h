@@ -22,6 +22,11 @@ int Utf8SequenceLength(unsigned char lead);
 /// marks, and anything the locale cannot show.
 int SafeCodePointCells(char32_t codePoint);
 
+/// A control character (C0, DEL, C1) or a format character that reorders or
+/// hides text (those SafeCodePointCells refuses before asking wcwidth): never
+/// sent to a terminal as it is. Does not depend on the locale.
+bool IsControlOrFormat(char32_t codePoint);
+
 /// Appends the UTF-8 bytes of one code point.
 void AppendUtf8(std::string& out, char32_t codePoint);
 

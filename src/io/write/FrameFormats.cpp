@@ -1,5 +1,6 @@
 #include "io/write/FrameFormats.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <type_traits>
@@ -22,6 +23,21 @@ void AppendNumber(Number value, std::string& out) {
   }
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+// Significant digits of the json dump's camera numbers (SPEC 7): the last
+// digits of sin and cos differ between the maths library's FMA and plain
+// paths (theta 297deg: 0.891006524188368 or 0.8910065241883679), and a dump
+// must be the same on every CPU. A number below 1e-12 of `scale` (the
+// rounding noise about 0, as cos(pi/2) gives) is 0.
+constexpr int kCameraDigits = 12;
+
+void AppendCameraNumber(double value, double scale, std::string& out) {
+  if (!(std::abs(value) >= scale * 1e-12)) value = 0.0;  // also -0
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value,
+                                    std::chars_format::general, kCameraDigits);
   out.append(buffer, result.ptr);
 }
 
@@ -183,16 +199,18 @@ void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Sc
   out += ", \"phi\": ";
   AppendNumber(camera.view.phi, out);
   out += ", \"eyeFromFile\": [";
+  double matrixScale = 0.0;
+  for (const double entry : eyeFromFile.m) matrixScale = std::max(matrixScale, std::abs(entry));
   for (size_t i = 0; i < eyeFromFile.m.size(); ++i) {
     if (i > 0) out += ", ";
-    AppendNumber(eyeFromFile.m[i], out);
+    AppendCameraNumber(eyeFromFile.m[i], matrixScale, out);
   }
   out += "], \"d\": ";
-  AppendNumber(camera.projection.d, out);
+  AppendCameraNumber(camera.projection.d, std::abs(camera.projection.d), out);
   out += ", \"center\": [";
-  AppendNumber(camera.projection.cx, out);
+  AppendCameraNumber(camera.projection.cx, std::abs(camera.projection.cx), out);
   out += ", ";
-  AppendNumber(camera.projection.cy, out);
+  AppendCameraNumber(camera.projection.cy, std::abs(camera.projection.cy), out);
   out += "]}, \"glyphs\": [";
   for (int row = 0; row < cells.HeightCells(); ++row) {
     if (row > 0) out += ", ";

@@ -49,7 +49,10 @@ struct JsonSamples {
 
 /// One `termshade-frame/1` JSON object on one line, ended by '\n'. With
 /// samples, also the glyph mode, `samples` [k, m] and `sampleFaces`: per
-/// cell the k x m sample faces, row-major.
+/// cell the k x m sample faces, row-major. The camera's `eyeFromFile`, `d`
+/// and `center` carry 12 significant digits (entries below 1e-12 of the
+/// matrix's largest are 0), so the dump is the same on every CPU; the rest
+/// is exact (shortest round trip).
 void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Scene& scene,
                      const Camera& camera, const RenderOptions& options, std::string& out,
                      const JsonSamples* samples = nullptr);
