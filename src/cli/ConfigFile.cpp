@@ -76,7 +76,8 @@ ConfigChoice ChooseConfig(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--") break;
-    if (subcommandAt < 0 && (arg == "render" || arg == "generate" || arg == "bench"))
+    if (subcommandAt < 0 &&
+        (arg == "render" || arg == "generate" || arg == "bench" || arg == "info"))
       subcommandAt = i;
     if (arg == "--no-config") noConfig = true;
     if (arg == "--config" && i + 1 < argc) configAt = i;

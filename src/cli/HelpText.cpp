@@ -88,6 +88,10 @@ const std::vector<CommandExamples>& AllExamples() {
         {"termshade render a.obj b.stl --size 60x20", "two models, one frame each, in turn"},
         {"termshade render part.stl --expect part.snap",
          "snapshot test: compare with the golden (write it once with --update)"}}},
+      {"info",
+       {{"termshade info car.obj", "reader, counts, bounds, up axis, open edges, colours, load "
+                                   "time and peak memory"},
+        {"termshade info --format json parts/*.stl", "one JSON object a model, for scripts"}}},
       {"generate",
        {{"termshade generate sphere_cone", "the demo scene as .dat to stdout"},
         {"termshade generate all -o data", "every shipped scene into data/"},

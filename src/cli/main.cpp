@@ -20,6 +20,7 @@
 #include "cli/ConfigFile.h"
 #include "cli/GenerateCommand.h"
 #include "cli/HelpText.h"
+#include "cli/InfoCommand.h"
 #include "cli/NumberChecks.h"
 #include "cli/RenderCommand.h"
 #include "cli/SnapshotCheck.h"
@@ -342,6 +343,24 @@ int Run(int argc, char** argv) {
   termshade::SnapshotCommandOptions snapshot;
   termshade::AddSnapshotOptions(*renderCommand, snapshot);
 
+  // A model's report: termshade info MODEL... [--format json]
+  termshade::InfoCommandOptions info;
+  CLI::App* infoCommand = app.add_subcommand(
+      "info",
+      "what a model file holds: reader, counts, bounds, up axis, open edges, colours, "
+      "load time and peak memory; nothing drawn");
+  infoCommand->add_option("model", info.modelPaths, "model file(s)")
+      ->required()
+      ->type_name("MODEL");
+  infoCommand->add_option("--format", info.format, "text (default) or json (one object a line)")
+      ->check(CLI::IsMember({"text", "json"}));
+  AddUpOption(*infoCommand, info.upAxis);
+  AddLoadLimitOptions(*infoCommand, info.loadLimits);
+  infoCommand
+      ->add_option("--reader", info.reader,
+                   "auto (default): dedicated readers where they exist; assimp: Assimp for all")
+      ->check(CLI::IsMember({"auto", "assimp"}));
+
   // Scene files: termshade generate NAME [-o FILE]
   termshade::GenerateCommandOptions generate;
   CLI::App* generateCommand = app.add_subcommand(
@@ -529,6 +548,7 @@ int Run(int argc, char** argv) {
                                 : termshade::RunRenderCommand(render);
   }
   if (generateCommand->parsed()) return termshade::RunGenerateCommand(generate);
+  if (infoCommand->parsed()) return termshade::RunInfoCommand(info);
   if (methodsCommand->parsed()) return termshade::RunMethodsBench(methodsBench);
   if (frameCommand->parsed()) return termshade::RunFrameBench(frameBench);
   if (fidelityCommand->parsed()) return termshade::RunFidelityBench(fidelityBench);

@@ -29,6 +29,9 @@ struct Mesh {
   std::vector<Rgb> faceColors;
   /// The file's up axis: what the file declares, else its format's convention (SPEC 10).
   UpAxis upAxisFile = UpAxis::kPlusZ;
+  /// Who read the file and as what ("termshade OBJ reader", "Assimp (import
+  /// helper), as dae"); set by LoadModelFile, for reports.
+  std::string reader;
 
   size_t FaceCount() const { return faceStarts.size() - 1; }
   std::span<const uint32_t> Face(size_t face) const {

@@ -126,6 +126,7 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
                                                     read.faceCorners.size(), read.FaceCount(),
                                                     LargestFaceCorners(read)));
       if (overBudget(needed)) return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
+      mesh->Value().reader = "termshade " + ToUpper(format) + " reader";
       return std::move(*mesh);
     }
   }
@@ -156,8 +157,15 @@ Loaded<Mesh> LoadImported(FileBytes bytes, const std::string& format, const Mode
   }
   if (auto problem = CheckOpenGexStructure(text, format)) return fail(std::move(*problem));
   if (auto problem = CheckQuick3dCounts(text)) return fail(std::move(*problem));
-  return options.importInProcess ? ImportWithAssimp(source, std::move(text), options)
-                                 : ImportWithAssimpIsolated(source, std::move(text), options);
+  Loaded<Mesh> imported = options.importInProcess
+                              ? ImportWithAssimp(source, std::move(text), options)
+                              : ImportWithAssimpIsolated(source, std::move(text), options);
+  if (imported.Ok()) {
+    imported.Value().reader =
+        std::string(options.importInProcess ? "Assimp (in process)" : "Assimp (import helper)") +
+        (format.empty() ? ", format found by its content" : ", as " + format);
+  }
+  return imported;
 }
 
 // A .dat read from a mapping is checked for a changed file after the parse.
@@ -165,6 +173,7 @@ Loaded<Mesh> LoadDatBytes(const FileBytes& bytes, const ModelPlace& place,
                           const LoadOptions& options) {
   Loaded<Mesh> mesh = LoadDat(bytes.View(), place, options);
   if (auto changed = ChangedError(bytes, place.displayName)) return *changed;
+  if (mesh.Ok()) mesh.Value().reader = "termshade .dat reader";
   return mesh;
 }
 
