@@ -23,6 +23,7 @@
 #include "tui/InputDecoder.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
+#include "tui/MotionFrames.h"
 #include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
 #include "tui/SceneJob.h"
@@ -142,6 +143,7 @@ class EventLoop {
             std::chrono::ceil<std::chrono::milliseconds>(nextTurntableFrame_ - now).count();
         wakeWithin(static_cast<int>(std::max<long long>(0, wait)));
       }
+      wakeWithin(motion_.WakeMs(now, turning_));  // the full frame after cheap ones
       if (job_) wakeWithin(kLoadProgressPollMs);
       pollfd fds[5] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
@@ -169,6 +171,8 @@ class EventLoop {
       UpdateHierarchyJob();
       // Step 4: the turntable, at a capped rate (turned when the frame is drawn).
       if (state_.Turntable() && Clock::now() >= nextTurntableFrame_) dirty_ = true;
+      // Step 5: the view rests after cheap frames: the full frame follows.
+      if (motion_.FullFrameDue(Clock::now(), turning_)) dirty_ = true;
     }
     AwaitAnswers(kQuitAnswerWait);
     // A worker still loading is asked to stop, and left to end alone if it runs on.
@@ -186,7 +190,12 @@ class EventLoop {
   // Whether a frame may go out now: the terminal has answered for the last
   // one (FramePacer); one that does not answer has taken all that was sent.
   bool MayDraw() {
-    if (!pacer_.MayDraw(Clock::now())) return false;
+    const auto now = Clock::now();
+    // The full frame once the view rests may follow the last cheap one
+    // without waiting for its answer: the picture is whole a round trip sooner.
+    if (pacer_.Answering() && pacer_.RequestsInFlight() <= 1 && motion_.FullFrameDue(now, turning_))
+      return true;
+    if (!pacer_.MayDraw(now)) return false;
     return pacer_.Answering() || TerminalSession::OutputQueuedBytes() == 0;
   }
 
@@ -196,6 +205,7 @@ class EventLoop {
     if (!turning_) return;
     const auto now = Clock::now();
     state_.TurntableAdvance(std::chrono::duration<double>(now - lastTurn_).count());
+    motion_.ViewMoved(now);
     lastTurn_ = now;
     nextTurntableFrame_ = std::max(nextTurntableFrame_ + kTurntablePeriod, now);
   }
@@ -353,6 +363,7 @@ class EventLoop {
   void HandleInput(const InputEvent& event) {
     if (event.deviceAnswer) {
       pacer_.AnswerRead(Clock::now());
+      motion_.RoundTripMeasured(pacer_.LastRoundTripSeconds());
       return;
     }
     if (!event.mouse) {
@@ -411,6 +422,7 @@ class EventLoop {
       editor_.Clear();
       completionMatches_ = 1;
     }
+    if (MovesView(action)) motion_.ViewMoved(Clock::now());
     if (action != ViewerAction::kNone) {
       state_.SetMessage("");
       state_.Apply(action);
@@ -477,6 +489,7 @@ class EventLoop {
   // since the last report (motion reports come while it is held).
   void HandleMouse(const MouseReport& report) {
     using Kind = MouseReport::Kind;
+    motion_.ViewMoved(Clock::now());
     if (report.kind == Kind::kWheelUp) state_.Apply(ViewerAction::kCloser);
     if (report.kind == Kind::kWheelDown) state_.Apply(ViewerAction::kFarther);
     if (report.kind == Kind::kPress && report.button == 0) {
@@ -502,6 +515,7 @@ class EventLoop {
     const int cols = TerminalSession::WidthCells(), rows = TerminalSession::HeightCells();
     grid_.Resize(cols, rows);
     const int levelCount = state_.Render().ramp.LevelCount();
+    motion_.FrameDrawn(false);
     if (cols < kMinCols || rows < kMinRows) {
       painter_.PaintTooSmall(grid_);
       Present(std::nullopt);
@@ -534,9 +548,15 @@ class EventLoop {
     const RenderStats stats = renderer_.Render(*pick.scene, camera, frameOptions_, depth_, cells_);
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     ++framesDrawn_;
-    CellColourMap colours(pick.scene->source.faceColors, levelCount, state_.Colour(),
-                          state_.Background());
-    painter_.PaintFrame(cells_, colours, grid_);
+    // On a slow link, while the view moves: the 256-colour palette and a few
+    // shades (MotionFrames); the full frame follows once the view rests.
+    const bool cheap =
+        state_.Colour() != ColourMode::kNone && motion_.Cheap(Clock::now(), turning_);
+    motion_.FrameDrawn(cheap);
+    CellColourMap colours(pick.scene->source.faceColors, levelCount,
+                          cheap ? ColourMode::k256 : state_.Colour(), state_.Background());
+    painter_.PaintFrame(cells_, colours, grid_, levelCount,
+                        cheap ? MotionFrames::kMotionLevels : 0);
     // Step 2: overlays and the status line, then one write of what changed.
     if (state_.HelpShown()) painter_.PaintHelp(grid_);
     std::optional<std::pair<int, int>> cursor;
@@ -600,6 +620,7 @@ class EventLoop {
   ScreenPainter painter_;
   TerminalWriter writer_;
   FramePacer pacer_;
+  MotionFrames motion_;                   ///< cheaper frames while moving on a slow link
   bool turning_ = false;                  ///< the turntable was on at the last look
   Clock::time_point lastTurn_;            ///< when the turntable last turned
   Clock::time_point nextTurntableFrame_;  ///< its next frame is due

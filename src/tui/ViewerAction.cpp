@@ -58,6 +58,24 @@ ViewerAction ActionForChar(int ascii) {
   }
 }
 
+bool MovesView(ViewerAction action) {
+  switch (action) {
+    case ViewerAction::kOrbitLeft:
+    case ViewerAction::kOrbitRight:
+    case ViewerAction::kOrbitUp:
+    case ViewerAction::kOrbitDown:
+    case ViewerAction::kCloser:
+    case ViewerAction::kFarther:
+    case ViewerAction::kResetView:
+    case ViewerAction::kRefit:
+    case ViewerAction::kAspectDown:
+    case ViewerAction::kAspectUp:
+      return true;
+    default:
+      return false;
+  }
+}
+
 ViewerAction ActionForNamedKey(NamedKey key) {
   switch (key) {
     case NamedKey::kLeft:
