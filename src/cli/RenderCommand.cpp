@@ -20,6 +20,7 @@
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
+#include "shade/Lighting.h"
 #include "tui/TerminalColours.h"
 
 namespace termshade {
@@ -197,6 +198,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.twoColour = *format == FrameFormat::kAnsi || *format == FrameFormat::kSvg ||
                             *format == FrameFormat::kAsciicast;
   renderOptions.cullBackFaces = !options.noCull;
+  if (options.lightRadians)
+    renderOptions.sunEye = SunFromAngles(options.lightRadians->first, options.lightRadians->second);
   renderOptions.threads = options.threads;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
   const auto [widthCells, heightCells] = FrameSizeCells(options);

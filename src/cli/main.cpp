@@ -298,6 +298,24 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(0.01, 1000.0));
   AddAngleOption(*renderCommand, "--step", render.stepRadians,
                  "turntable: theta step between frames, radians or Ndeg (default 0.1)");
+  renderCommand
+      ->add_option_function<std::string>(
+          "--light",
+          [&render](const std::string& text) {
+            const size_t comma = text.find(',');
+            const auto azimuth = termshade::ParseAngleRadians(text.substr(0, comma));
+            const auto elevation = comma == std::string::npos
+                                       ? std::nullopt
+                                       : termshade::ParseAngleRadians(text.substr(comma + 1));
+            if (!azimuth || !elevation) {
+              throw CLI::ValidationError("--light",
+                                         "expected AZIMUTH,ELEVATION, radians or Ndeg (0.4,-0.2)");
+            }
+            render.lightRadians = {*azimuth, *elevation};
+          },
+          "the sun as two angles about the eye's axes, radians or Ndeg: AZIMUTH,ELEVATION "
+          "(default 0,0: from the upper left front; the viewer's L mode moves it)")
+      ->type_name("AZ,EL");
   AddUpOption(*renderCommand, render.upAxis);
   renderCommand
       ->add_option("--input-format", render.inputFormat,

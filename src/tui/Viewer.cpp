@@ -10,6 +10,7 @@
 #include <clocale>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 #include "geometry/LevelOfDetail.h"
@@ -19,6 +20,7 @@
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
+#include "tui/ClipboardSequence.h"
 #include "tui/FramePacer.h"
 #include "tui/InputDecoder.h"
 #include "tui/LineEditor.h"
@@ -33,6 +35,7 @@
 #include "tui/TerminalColours.h"
 #include "tui/TerminalSession.h"
 #include "tui/TerminalWriter.h"
+#include "tui/ViewCommand.h"
 #include "tui/ViewerState.h"
 
 namespace termshade {
@@ -428,6 +431,7 @@ class EventLoop {
       state_.Apply(action);
       dirty_ = true;
     }
+    if (action == ViewerAction::kShowRenderCommand) ShowRenderCommand();
   }
 
   void HandlePromptKey(int key) {
@@ -505,6 +509,39 @@ class EventLoop {
     dirty_ = true;
   }
 
+  // y: the `termshade render` command of the view shown, on the status line
+  // and, by OSC 52, on the clipboard where the terminal allows it.
+  void ShowRenderCommand() {
+    if (!state_.HasModel()) return;
+    const std::string& path = state_.ModelPath();
+    if (path.empty()) {
+      state_.SetMessage("the demo scene has no file for render: open a model (o)");
+      return;
+    }
+    const Scene& scene = state_.CurrentScene();
+    ViewToReproduce shown;
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+    shown.modelPath = error ? path : absolute.string();
+    shown.widthCells = TerminalSession::WidthCells();
+    shown.heightCells = TerminalSession::HeightCells() - 1;
+    shown.view = state_.View();
+    shown.cellAspect = state_.CellAspect();
+    shown.upAxis = scene.upAxis;
+    shown.render = state_.Render();
+    shown.colour = state_.Colour();
+    shown.background = state_.Background();
+    shown.sunAzimuthRadians = state_.SunAzimuthRadians();
+    shown.sunElevationRadians = state_.SunElevationRadians();
+    shown.levelOfDetail = lastDetailLevel_ > 0;
+    const std::string command = RenderCommandFor(shown);
+    writer_.Send(ClipboardSequence(command));
+    // f fits the model at the distance of the moment; render always fits at the default.
+    const bool refitted = state_.FitRho() != DefaultView(scene.diagonalModelUnits).rho;
+    state_.SetMessage(
+        command + (refitted ? "  (after f: render fits at the default distance; r resets)" : ""));
+  }
+
   // A terminal that would scroll on its bottom-right cell gets one cell less.
   static int StatusCols(int cols) {
     return TerminalWriter::BottomRightWritable() ? cols : cols - 1;
@@ -546,6 +583,7 @@ class EventLoop {
     const DetailPick pick =
         PickDetail(state_.Levels(), state_.CurrentScene(), camera, frameOptions_);
     const RenderStats stats = renderer_.Render(*pick.scene, camera, frameOptions_, depth_, cells_);
+    lastDetailLevel_ = pick.level;
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     ++framesDrawn_;
     // On a slow link, while the view moves: the 256-colour palette and a few
@@ -635,6 +673,7 @@ class EventLoop {
   std::unique_ptr<HierarchyJob> hierarchyJob_;    ///< the scene's hierarchy being built, if any
   std::weak_ptr<const Scene> hierarchyTriedFor_;  ///< the scene a hierarchy was last built for
   long framesDrawn_ = 0;
+  int lastDetailLevel_ = 0;  ///< the level of detail the last frame drew (0: exact)
   LoadRequest jobRequest_;
   std::string shownLoadingText_;  ///< what the status line last said of it
   int completionMatches_ = 1;     ///< names the last Tab matched (1: no hint)

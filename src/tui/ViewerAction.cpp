@@ -50,6 +50,8 @@ ViewerAction ActionForChar(int ascii) {
       return ViewerAction::kAspectDown;
     case 'A':
       return ViewerAction::kAspectUp;
+    case 'y':
+      return ViewerAction::kShowRenderCommand;
     case 'q':
     case 'Q':
       return ViewerAction::kQuit;

@@ -27,6 +27,7 @@ enum class ViewerAction {
   kToggleHelp,
   kAspectDown,
   kAspectUp,
+  kShowRenderCommand,
   kQuit,
 };
 
