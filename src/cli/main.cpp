@@ -213,7 +213,7 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
 }
 
 int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
-                  double cellAspectOption) {
+                  double cellAspectOption, const std::string& recordPath) {
   termshade::ViewerOptions viewer;
   viewer.modelPaths = models;
   if (cellAspectOption > 0.0) viewer.cellAspect = cellAspectOption;
@@ -236,6 +236,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
   viewer.theta = look.theta;
   viewer.phi = look.phi;
+  viewer.recordPath = recordPath;
   return termshade::RunViewer(viewer);
 }
 
@@ -272,6 +273,11 @@ int Run(int argc, char** argv) {
   AddLoadLimitOptions(app, viewerLook.loadLimits);
   AddAngleOption(app, "--theta", viewerLook.theta, "starting eye azimuth, radians or Ndeg (0.3)");
   AddAngleOption(app, "--phi", viewerLook.phi, "starting eye polar angle, radians or Ndeg (1.3)");
+  std::string recordPath;
+  app.add_option("--record", recordPath,
+                 "record what the viewer shows as an asciinema v2 file (FILE.cast), written "
+                 "whole when the viewer ends")
+      ->type_name("FILE");
 
   // Headless frames: termshade render MODEL [options]
   RenderCommandOptions render;
@@ -519,7 +525,7 @@ int Run(int argc, char** argv) {
     loadBench.executablePath = SelfPath();
     return termshade::RunLoadBench(loadBench);
   }
-  return RunViewerFrom(viewerLook, models, viewerAspect);
+  return RunViewerFrom(viewerLook, models, viewerAspect, recordPath);
 }
 
 }  // namespace

@@ -36,6 +36,7 @@
 #include "tui/TerminalSession.h"
 #include "tui/TerminalWriter.h"
 #include "tui/ViewCommand.h"
+#include "tui/ViewerRecording.h"
 #include "tui/ViewerState.h"
 
 namespace termshade {
@@ -109,9 +110,10 @@ RayBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
 
 class EventLoop {
  public:
-  EventLoop(ViewerState& state, TerminalSession& session)
+  EventLoop(ViewerState& state, TerminalSession& session, ViewerRecording* recording)
       : state_(state),
         session_(session),
+        recording_(recording),
         writer_(STDOUT_FILENO),
         input_([&session] { return session.NextKey(); },
                [&session] { return session.NextKeyWithin(kReportRestMs); }) {}
@@ -214,7 +216,10 @@ class EventLoop {
   }
 
   // The frame in grid_, then the request for the terminal's answer, in one write.
-  void Present(std::optional<std::pair<int, int>> cursor) {
+  // `full`: what a recording gets instead of grid_ (the full frame of a cheap one).
+  void Present(std::optional<std::pair<int, int>> cursor, const ScreenGrid* full = nullptr) {
+    if (recording_ != nullptr)
+      recording_->Frame(full != nullptr ? *full : grid_, cursor, Clock::now());
     writer_.Present(grid_, cursor, FramePacer::kRequest);
     pacer_.RequestSent(Clock::now(), writer_.LastFrameBytes());
   }
@@ -551,7 +556,6 @@ class EventLoop {
     dirty_ = false;
     const int cols = TerminalSession::WidthCells(), rows = TerminalSession::HeightCells();
     grid_.Resize(cols, rows);
-    const int levelCount = state_.Render().ramp.LevelCount();
     motion_.FrameDrawn(false);
     if (cols < kMinCols || rows < kMinRows) {
       painter_.PaintTooSmall(grid_);
@@ -591,24 +595,39 @@ class EventLoop {
     const bool cheap =
         state_.Colour() != ColourMode::kNone && motion_.Cheap(Clock::now(), turning_);
     motion_.FrameDrawn(cheap);
-    CellColourMap colours(pick.scene->source.faceColors, levelCount,
-                          cheap ? ColourMode::k256 : state_.Colour(), state_.Background());
-    painter_.PaintFrame(cells_, colours, grid_, levelCount,
-                        cheap ? MotionFrames::kMotionLevels : 0);
     // Step 2: overlays and the status line, then one write of what changed.
-    if (state_.HelpShown()) painter_.PaintHelp(grid_);
-    std::optional<std::pair<int, int>> cursor;
-    if (prompting_) {
-      // After Tab: how many names matched, when not exactly one.
-      const std::string label = completionMatches_ == 1 ? "open: "
-                                : completionMatches_ == 0
-                                    ? "open (no match): "
-                                    : "open (" + std::to_string(completionMatches_) + " matches): ";
-      cursor = painter_.PaintPrompt(label, editor_, grid_);
-    } else {
-      painter_.PaintStatus(StatusText(stats, pick, frameMs, StatusCols(cols)), grid_);
+    const std::string status =
+        prompting_ ? std::string() : StatusText(stats, pick, frameMs, StatusCols(cols));
+    const auto cursor = Compose(*pick.scene, status, cheap, grid_);
+    // A recording gets the full frame, never a cheap one.
+    if (cheap && recording_ != nullptr) {
+      recordGrid_.Resize(cols, rows);
+      Compose(*pick.scene, status, false, recordGrid_);
+      Present(cursor, &recordGrid_);
+      return;
     }
     Present(cursor);
+  }
+
+  // The frame in cells_ with its colours (cheap: MotionFrames'), the help
+  // overlay, and the prompt or the status line, into grid; where the cursor goes.
+  std::optional<std::pair<int, int>> Compose(const Scene& drawn, const std::string& status,
+                                             bool cheap, ScreenGrid& grid) {
+    const int levelCount = state_.Render().ramp.LevelCount();
+    CellColourMap colours(drawn.source.faceColors, levelCount,
+                          cheap ? ColourMode::k256 : state_.Colour(), state_.Background());
+    painter_.PaintFrame(cells_, colours, grid, levelCount, cheap ? MotionFrames::kMotionLevels : 0);
+    if (state_.HelpShown()) painter_.PaintHelp(grid);
+    if (!prompting_) {
+      painter_.PaintStatus(status, grid);
+      return std::nullopt;
+    }
+    // After Tab: how many names matched, when not exactly one.
+    const std::string label = completionMatches_ == 1 ? "open: "
+                              : completionMatches_ == 0
+                                  ? "open (no match): "
+                                  : "open (" + std::to_string(completionMatches_) + " matches): ";
+    return painter_.PaintPrompt(label, editor_, grid);
   }
 
   // The status line: what is loading, a message or the model, then the
@@ -655,6 +674,8 @@ class EventLoop {
 
   ViewerState& state_;
   TerminalSession& session_;
+  ViewerRecording* recording_;  ///< --record, or null
+  ScreenGrid recordGrid_;       ///< the full frame for the recording, when the screen's is cheap
   ScreenPainter painter_;
   TerminalWriter writer_;
   FramePacer pacer_;
@@ -711,6 +732,19 @@ int RunViewer(const ViewerOptions& options) {
               << SanitizeForTerminal(codeset) << "); try LANG=C.UTF-8\n";
     return 2;
   }
+  // --record: the file is made before the terminal is taken, so a path that
+  // cannot be written is said on the shell.
+  std::optional<ViewerRecording> recording;
+  std::optional<std::string> recordError;
+  if (!options.recordPath.empty()) {
+    recording.emplace(options.recordPath);
+    if (const auto problem =
+            recording->Open(ThemeFor(effective.background.value_or(Background::kDark)))) {
+      std::cerr << "termshade: --record " << SanitizeForTerminal(options.recordPath) << ": "
+                << SanitizeForTerminal(*problem) << "\n";
+      return 1;
+    }
+  }
   LoopOutcome outcome;
   {
     TerminalSession session;
@@ -730,9 +764,14 @@ int RunViewer(const ViewerOptions& options) {
                     utf8);
     // The first model loads on the worker too: the screen says so at once.
     state.RequestFirst();
-    EventLoop loop(state, session);
+    EventLoop loop(state, session, recording ? &*recording : nullptr);
     outcome = loop.Run();
+    if (recording) recordError = recording->Finish(std::chrono::steady_clock::now());
   }  // the terminal is given back here
+  if (recordError) {
+    std::cerr << "termshade: --record " << SanitizeForTerminal(options.recordPath) << ": "
+              << SanitizeForTerminal(*recordError) << "\n";
+  }
   // Killed: the signal's own exit status (128 + N), as a shell expects.
   if (outcome.signalNumber != 0) return TerminalSession::ReRaise(outcome.signalNumber);
   int code = 0;
@@ -743,6 +782,7 @@ int RunViewer(const ViewerOptions& options) {
     std::cerr << "termshade: cancelled loading " << outcome.cancelledStart << "\n";
     code = 1;
   }
+  if (recordError) code = 1;    // the recording was not made
   if (outcome.abandonedLoad) {  // no static destructors under a running importer
     std::cerr.flush();
     std::fflush(nullptr);
