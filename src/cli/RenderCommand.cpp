@@ -24,6 +24,7 @@
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
+#include "shade/Lighting.h"
 #include "tui/TerminalColours.h"
 
 namespace termshade {
@@ -243,6 +244,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
                                           ResolveColourMode(*colourMode) != ColourMode::kNone)
                              : *glyphs;
   renderOptions.cullBackFaces = !options.noCull;
+  if (options.lightRadians)
+    renderOptions.sunEye = SunFromAngles(options.lightRadians->first, options.lightRadians->second);
   renderOptions.threads = options.threads;
   renderOptions.keepDepth = *format == FrameFormat::kJson;  // only json dumps depth
   const auto [widthCells, heightCells] = FrameSizeCells(options);

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/UpAxis.h"
@@ -37,11 +38,13 @@ struct RenderCommandOptions {
   /// --color: none, 256, truecolor or auto; empty: the command's default
   /// (render: 256, so dumps do not depend on the environment; viewer: auto).
   std::string colour;
-  bool mono = false;             ///< --mono: --color none
+  bool mono = false;  ///< --mono: --color none
   /// --background dark|light: the terminal the colours are made for; render's
   /// default is dark whatever the terminal, so dumps stay reproducible.
-  std::string background;  ///< empty: the command's default
+  std::string background;        ///< empty: the command's default
   std::optional<UpAxis> upAxis;  ///< unset: each file's own (SPEC 10)
+  /// --light AZIMUTH,ELEVATION: the sun's angles (SunFromAngles); unset: the default sun.
+  std::optional<std::pair<double, double>> lightRadians;
   /// --lod auto|off; empty: the command's default (render: off, exact dumps; viewer: auto).
   std::string lod;
 };

@@ -237,7 +237,7 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
 }
 
 int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
-                  double cellAspectOption) {
+                  double cellAspectOption, const std::string& recordPath) {
   termshade::ViewerOptions viewer;
   viewer.modelPaths = models;
   if (cellAspectOption > 0.0) viewer.cellAspect = cellAspectOption;
@@ -261,6 +261,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
   viewer.detail = *termshade::ParseDetailMode(look.lod.empty() ? "auto" : look.lod);
   viewer.theta = look.theta;
   viewer.phi = look.phi;
+  viewer.recordPath = recordPath;
   return termshade::RunViewer(viewer);
 }
 
@@ -297,6 +298,11 @@ int Run(int argc, char** argv) {
   AddLoadLimitOptions(app, viewerLook.loadLimits);
   AddAngleOption(app, "--theta", viewerLook.theta, "starting eye azimuth, radians or Ndeg (0.3)");
   AddAngleOption(app, "--phi", viewerLook.phi, "starting eye polar angle, radians or Ndeg (1.3)");
+  std::string recordPath;
+  app.add_option("--record", recordPath,
+                 "record what the viewer shows as an asciinema v2 file (FILE.cast), written "
+                 "whole when the viewer ends")
+      ->type_name("FILE");
 
   // Headless frames: termshade render MODEL [options]
   RenderCommandOptions render;
@@ -324,6 +330,24 @@ int Run(int argc, char** argv) {
       ->check(CLI::Range(0.01, 1000.0));
   AddAngleOption(*renderCommand, "--step", render.stepRadians,
                  "turntable: theta step between frames, radians or Ndeg (default 0.1)");
+  renderCommand
+      ->add_option_function<std::string>(
+          "--light",
+          [&render](const std::string& text) {
+            const size_t comma = text.find(',');
+            const auto azimuth = termshade::ParseAngleRadians(text.substr(0, comma));
+            const auto elevation = comma == std::string::npos
+                                       ? std::nullopt
+                                       : termshade::ParseAngleRadians(text.substr(comma + 1));
+            if (!azimuth || !elevation) {
+              throw CLI::ValidationError("--light",
+                                         "expected AZIMUTH,ELEVATION, radians or Ndeg (0.4,-0.2)");
+            }
+            render.lightRadians = {*azimuth, *elevation};
+          },
+          "the sun as two angles about the eye's axes, radians or Ndeg: AZIMUTH,ELEVATION "
+          "(default 0,0: from the upper left front; the viewer's L mode moves it)")
+      ->type_name("AZ,EL");
   AddUpOption(*renderCommand, render.upAxis);
   renderCommand
       ->add_option("--input-format", render.inputFormat,
@@ -571,7 +595,7 @@ int Run(int argc, char** argv) {
     loadBench.executablePath = SelfPath();
     return termshade::RunLoadBench(loadBench);
   }
-  return RunViewerFrom(viewerLook, models, viewerAspect);
+  return RunViewerFrom(viewerLook, models, viewerAspect, recordPath);
 }
 
 }  // namespace

@@ -6,12 +6,14 @@
 
 #include "io/read/LoadError.h"
 #include "shade/Utf8.h"
+#include "tui/MotionFrames.h"
 #include "tui/ViewerKeys.h"
 
 namespace termshade {
 
-void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours,
-                               ScreenGrid& grid) const {
+void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours, ScreenGrid& grid,
+                               int levelCount, int coarseLevels) const {
+  const auto shade = [&](int level) { return CoarseLevel(level, levelCount, coarseLevels); };
   const int rows = std::min(cells.HeightCells(), grid.HeightCells());
   const int cols = std::min(cells.WidthCells(), grid.WidthCells());
   for (int row = 0; row < rows; ++row) {
@@ -21,11 +23,18 @@ void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours,
       cell = {cells.Glyph(col, row), CellStyle::kPlain, TermColour{}, TermColour{}};
       if (level >= 0) {
         cell.style = CellStyle::kFace;
-        cell.colour = colours.ForFace(cells.FaceNumber(col, row), level);
+        cell.colour = colours.ForFace(cells.FaceNumber(col, row), shade(level));
         // Two-colour glyph modes (SPEC 11): the samples on the glyph's other side.
         const int backLevel = cells.BackLevel(col, row);
         if (backLevel >= 0)
-          cell.background = colours.ForFace(cells.BackFaceNumber(col, row), backLevel);
+          cell.background = colours.ForFace(cells.BackFaceNumber(col, row), shade(backLevel));
+        // Both sides in one coarse colour look like a full block of it: sent
+        // as one (the writer keeps whatever background it has), and unchanged
+        // from the last frame more often.
+        if (coarseLevels > 1 && backLevel >= 0 && cell.background == cell.colour) {
+          cell.glyph = U'\u2588';
+          cell.background = TermColour{};
+        }
       }
     }
   }

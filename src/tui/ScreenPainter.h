@@ -18,7 +18,9 @@ class ScreenPainter {
  public:
   /// The frame's cells, faces coloured by colours (nothing with ColourMode::kNone); a cell
   /// with a background face (the two-colour glyph modes) gets that face's colour as bg.
-  void PaintFrame(const CellBuffer& cells, CellColourMap& colours, ScreenGrid& grid) const;
+  /// coarseLevels > 1: colours of that many shades only (CoarseLevel), for a cheap frame.
+  void PaintFrame(const CellBuffer& cells, CellColourMap& colours, ScreenGrid& grid,
+                  int levelCount = 0, int coarseLevels = 0) const;
   /// The bottom row in reverse video; the text is sanitized and cut to fit.
   void PaintStatus(const std::string& text, ScreenGrid& grid) const;
   /// The bottom row as a text field; returns where the cursor goes (col, row).

@@ -209,6 +209,10 @@ std::string TerminalWriter::ResetSequence() {
 
 void TerminalWriter::WriteAll() {
   lastFrameBytes_ = out_.size();
+  if (sink_ != nullptr) {
+    sink_->append(out_);
+    return;
+  }
   size_t sent = 0;
   while (sent < out_.size()) {
     const ssize_t n = write(outputFd_, out_.data() + sent, out_.size() - sent);

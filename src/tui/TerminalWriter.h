@@ -16,6 +16,8 @@ namespace termshade {
 class TerminalWriter {
  public:
   explicit TerminalWriter(int outputFd) : outputFd_(outputFd) {}
+  /// Appends to `sink` instead of writing (a recording of what the screen shows).
+  explicit TerminalWriter(std::string* sink) : outputFd_(-1), sink_(sink) {}
   /// Leaves default attributes and a visible cursor behind (ncurses does not
   /// know what this writer set, so its endwin() would not undo it).
   ~TerminalWriter();
@@ -60,6 +62,7 @@ class TerminalWriter {
   void WriteAll();
 
   int outputFd_;
+  std::string* sink_ = nullptr;
   ScreenGrid previous_;
   bool valid_ = false;
   bool cursorShown_ = true;

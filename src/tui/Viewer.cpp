@@ -10,6 +10,7 @@
 #include <clocale>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 #include "geometry/LevelOfDetail.h"
@@ -19,10 +20,12 @@
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
 #include "raster/Renderer.h"
+#include "tui/ClipboardSequence.h"
 #include "tui/FramePacer.h"
 #include "tui/InputDecoder.h"
 #include "tui/LineEditor.h"
 #include "tui/LoadJob.h"
+#include "tui/MotionFrames.h"
 #include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
 #include "tui/SceneJob.h"
@@ -32,6 +35,8 @@
 #include "tui/TerminalColours.h"
 #include "tui/TerminalSession.h"
 #include "tui/TerminalWriter.h"
+#include "tui/ViewCommand.h"
+#include "tui/ViewerRecording.h"
 #include "tui/ViewerState.h"
 
 namespace termshade {
@@ -105,9 +110,10 @@ RayBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
 
 class EventLoop {
  public:
-  EventLoop(ViewerState& state, TerminalSession& session)
+  EventLoop(ViewerState& state, TerminalSession& session, ViewerRecording* recording)
       : state_(state),
         session_(session),
+        recording_(recording),
         writer_(STDOUT_FILENO),
         input_([&session] { return session.NextKey(); },
                [&session] { return session.NextKeyWithin(kReportRestMs); }) {}
@@ -142,6 +148,7 @@ class EventLoop {
             std::chrono::ceil<std::chrono::milliseconds>(nextTurntableFrame_ - now).count();
         wakeWithin(static_cast<int>(std::max<long long>(0, wait)));
       }
+      wakeWithin(motion_.WakeMs(now, turning_));  // the full frame after cheap ones
       if (job_) wakeWithin(kLoadProgressPollMs);
       pollfd fds[5] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
@@ -169,6 +176,8 @@ class EventLoop {
       UpdateHierarchyJob();
       // Step 4: the turntable, at a capped rate (turned when the frame is drawn).
       if (state_.Turntable() && Clock::now() >= nextTurntableFrame_) dirty_ = true;
+      // Step 5: the view rests after cheap frames: the full frame follows.
+      if (motion_.FullFrameDue(Clock::now(), turning_)) dirty_ = true;
     }
     AwaitAnswers(kQuitAnswerWait);
     // A worker still loading is asked to stop, and left to end alone if it runs on.
@@ -186,7 +195,12 @@ class EventLoop {
   // Whether a frame may go out now: the terminal has answered for the last
   // one (FramePacer); one that does not answer has taken all that was sent.
   bool MayDraw() {
-    if (!pacer_.MayDraw(Clock::now())) return false;
+    const auto now = Clock::now();
+    // The full frame once the view rests may follow the last cheap one
+    // without waiting for its answer: the picture is whole a round trip sooner.
+    if (pacer_.Answering() && pacer_.RequestsInFlight() <= 1 && motion_.FullFrameDue(now, turning_))
+      return true;
+    if (!pacer_.MayDraw(now)) return false;
     return pacer_.Answering() || TerminalSession::OutputQueuedBytes() == 0;
   }
 
@@ -196,12 +210,16 @@ class EventLoop {
     if (!turning_) return;
     const auto now = Clock::now();
     state_.TurntableAdvance(std::chrono::duration<double>(now - lastTurn_).count());
+    motion_.ViewMoved(now);
     lastTurn_ = now;
     nextTurntableFrame_ = std::max(nextTurntableFrame_ + kTurntablePeriod, now);
   }
 
   // The frame in grid_, then the request for the terminal's answer, in one write.
-  void Present(std::optional<std::pair<int, int>> cursor) {
+  // `full`: what a recording gets instead of grid_ (the full frame of a cheap one).
+  void Present(std::optional<std::pair<int, int>> cursor, const ScreenGrid* full = nullptr) {
+    if (recording_ != nullptr)
+      recording_->Frame(full != nullptr ? *full : grid_, cursor, Clock::now());
     writer_.Present(grid_, cursor, FramePacer::kRequest);
     pacer_.RequestSent(Clock::now(), writer_.LastFrameBytes());
   }
@@ -353,6 +371,7 @@ class EventLoop {
   void HandleInput(const InputEvent& event) {
     if (event.deviceAnswer) {
       pacer_.AnswerRead(Clock::now());
+      motion_.RoundTripMeasured(pacer_.LastRoundTripSeconds());
       return;
     }
     if (!event.mouse) {
@@ -411,11 +430,13 @@ class EventLoop {
       editor_.Clear();
       completionMatches_ = 1;
     }
+    if (MovesView(action)) motion_.ViewMoved(Clock::now());
     if (action != ViewerAction::kNone) {
       state_.SetMessage("");
       state_.Apply(action);
       dirty_ = true;
     }
+    if (action == ViewerAction::kShowRenderCommand) ShowRenderCommand();
   }
 
   void HandlePromptKey(int key) {
@@ -477,6 +498,7 @@ class EventLoop {
   // since the last report (motion reports come while it is held).
   void HandleMouse(const MouseReport& report) {
     using Kind = MouseReport::Kind;
+    motion_.ViewMoved(Clock::now());
     if (report.kind == Kind::kWheelUp) state_.Apply(ViewerAction::kCloser);
     if (report.kind == Kind::kWheelDown) state_.Apply(ViewerAction::kFarther);
     if (report.kind == Kind::kPress && report.button == 0) {
@@ -492,6 +514,39 @@ class EventLoop {
     dirty_ = true;
   }
 
+  // y: the `termshade render` command of the view shown, on the status line
+  // and, by OSC 52, on the clipboard where the terminal allows it.
+  void ShowRenderCommand() {
+    if (!state_.HasModel()) return;
+    const std::string& path = state_.ModelPath();
+    if (path.empty()) {
+      state_.SetMessage("the demo scene has no file for render: open a model (o)");
+      return;
+    }
+    const Scene& scene = state_.CurrentScene();
+    ViewToReproduce shown;
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+    shown.modelPath = error ? path : absolute.string();
+    shown.widthCells = TerminalSession::WidthCells();
+    shown.heightCells = TerminalSession::HeightCells() - 1;
+    shown.view = state_.View();
+    shown.cellAspect = state_.CellAspect();
+    shown.upAxis = scene.upAxis;
+    shown.render = state_.Render();
+    shown.colour = state_.Colour();
+    shown.background = state_.Background();
+    shown.sunAzimuthRadians = state_.SunAzimuthRadians();
+    shown.sunElevationRadians = state_.SunElevationRadians();
+    shown.levelOfDetail = lastDetailLevel_ > 0;
+    const std::string command = RenderCommandFor(shown);
+    writer_.Send(ClipboardSequence(command));
+    // f fits the model at the distance of the moment; render always fits at the default.
+    const bool refitted = state_.FitRho() != DefaultView(scene.diagonalModelUnits).rho;
+    state_.SetMessage(
+        command + (refitted ? "  (after f: render fits at the default distance; r resets)" : ""));
+  }
+
   // A terminal that would scroll on its bottom-right cell gets one cell less.
   static int StatusCols(int cols) {
     return TerminalWriter::BottomRightWritable() ? cols : cols - 1;
@@ -501,7 +556,7 @@ class EventLoop {
     dirty_ = false;
     const int cols = TerminalSession::WidthCells(), rows = TerminalSession::HeightCells();
     grid_.Resize(cols, rows);
-    const int levelCount = state_.Render().ramp.LevelCount();
+    motion_.FrameDrawn(false);
     if (cols < kMinCols || rows < kMinRows) {
       painter_.PaintTooSmall(grid_);
       Present(std::nullopt);
@@ -532,25 +587,47 @@ class EventLoop {
     const DetailPick pick =
         PickDetail(state_.Levels(), state_.CurrentScene(), camera, frameOptions_);
     const RenderStats stats = renderer_.Render(*pick.scene, camera, frameOptions_, depth_, cells_);
+    lastDetailLevel_ = pick.level;
     const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     ++framesDrawn_;
-    CellColourMap colours(pick.scene->source.faceColors, levelCount, state_.Colour(),
-                          state_.Background());
-    painter_.PaintFrame(cells_, colours, grid_);
+    // On a slow link, while the view moves: the 256-colour palette and a few
+    // shades (MotionFrames); the full frame follows once the view rests.
+    const bool cheap =
+        state_.Colour() != ColourMode::kNone && motion_.Cheap(Clock::now(), turning_);
+    motion_.FrameDrawn(cheap);
     // Step 2: overlays and the status line, then one write of what changed.
-    if (state_.HelpShown()) painter_.PaintHelp(grid_);
-    std::optional<std::pair<int, int>> cursor;
-    if (prompting_) {
-      // After Tab: how many names matched, when not exactly one.
-      const std::string label = completionMatches_ == 1 ? "open: "
-                                : completionMatches_ == 0
-                                    ? "open (no match): "
-                                    : "open (" + std::to_string(completionMatches_) + " matches): ";
-      cursor = painter_.PaintPrompt(label, editor_, grid_);
-    } else {
-      painter_.PaintStatus(StatusText(stats, pick, frameMs, StatusCols(cols)), grid_);
+    const std::string status =
+        prompting_ ? std::string() : StatusText(stats, pick, frameMs, StatusCols(cols));
+    const auto cursor = Compose(*pick.scene, status, cheap, grid_);
+    // A recording gets the full frame, never a cheap one.
+    if (cheap && recording_ != nullptr) {
+      recordGrid_.Resize(cols, rows);
+      Compose(*pick.scene, status, false, recordGrid_);
+      Present(cursor, &recordGrid_);
+      return;
     }
     Present(cursor);
+  }
+
+  // The frame in cells_ with its colours (cheap: MotionFrames'), the help
+  // overlay, and the prompt or the status line, into grid; where the cursor goes.
+  std::optional<std::pair<int, int>> Compose(const Scene& drawn, const std::string& status,
+                                             bool cheap, ScreenGrid& grid) {
+    const int levelCount = state_.Render().ramp.LevelCount();
+    CellColourMap colours(drawn.source.faceColors, levelCount,
+                          cheap ? ColourMode::k256 : state_.Colour(), state_.Background());
+    painter_.PaintFrame(cells_, colours, grid, levelCount, cheap ? MotionFrames::kMotionLevels : 0);
+    if (state_.HelpShown()) painter_.PaintHelp(grid);
+    if (!prompting_) {
+      painter_.PaintStatus(status, grid);
+      return std::nullopt;
+    }
+    // After Tab: how many names matched, when not exactly one.
+    const std::string label = completionMatches_ == 1 ? "open: "
+                              : completionMatches_ == 0
+                                  ? "open (no match): "
+                                  : "open (" + std::to_string(completionMatches_) + " matches): ";
+    return painter_.PaintPrompt(label, editor_, grid);
   }
 
   // The status line: what is loading, a message or the model, then the
@@ -597,9 +674,12 @@ class EventLoop {
 
   ViewerState& state_;
   TerminalSession& session_;
+  ViewerRecording* recording_;  ///< --record, or null
+  ScreenGrid recordGrid_;       ///< the full frame for the recording, when the screen's is cheap
   ScreenPainter painter_;
   TerminalWriter writer_;
   FramePacer pacer_;
+  MotionFrames motion_;                   ///< cheaper frames while moving on a slow link
   bool turning_ = false;                  ///< the turntable was on at the last look
   Clock::time_point lastTurn_;            ///< when the turntable last turned
   Clock::time_point nextTurntableFrame_;  ///< its next frame is due
@@ -614,6 +694,7 @@ class EventLoop {
   std::unique_ptr<HierarchyJob> hierarchyJob_;    ///< the scene's hierarchy being built, if any
   std::weak_ptr<const Scene> hierarchyTriedFor_;  ///< the scene a hierarchy was last built for
   long framesDrawn_ = 0;
+  int lastDetailLevel_ = 0;  ///< the level of detail the last frame drew (0: exact)
   LoadRequest jobRequest_;
   std::string shownLoadingText_;  ///< what the status line last said of it
   int completionMatches_ = 1;     ///< names the last Tab matched (1: no hint)
@@ -651,6 +732,19 @@ int RunViewer(const ViewerOptions& options) {
               << SanitizeForTerminal(codeset) << "); try LANG=C.UTF-8\n";
     return 2;
   }
+  // --record: the file is made before the terminal is taken, so a path that
+  // cannot be written is said on the shell.
+  std::optional<ViewerRecording> recording;
+  std::optional<std::string> recordError;
+  if (!options.recordPath.empty()) {
+    recording.emplace(options.recordPath);
+    if (const auto problem =
+            recording->Open(ThemeFor(effective.background.value_or(Background::kDark)))) {
+      std::cerr << "termshade: --record " << SanitizeForTerminal(options.recordPath) << ": "
+                << SanitizeForTerminal(*problem) << "\n";
+      return 1;
+    }
+  }
   LoopOutcome outcome;
   {
     TerminalSession session;
@@ -670,9 +764,14 @@ int RunViewer(const ViewerOptions& options) {
                     utf8);
     // The first model loads on the worker too: the screen says so at once.
     state.RequestFirst();
-    EventLoop loop(state, session);
+    EventLoop loop(state, session, recording ? &*recording : nullptr);
     outcome = loop.Run();
+    if (recording) recordError = recording->Finish(std::chrono::steady_clock::now());
   }  // the terminal is given back here
+  if (recordError) {
+    std::cerr << "termshade: --record " << SanitizeForTerminal(options.recordPath) << ": "
+              << SanitizeForTerminal(*recordError) << "\n";
+  }
   // Killed: the signal's own exit status (128 + N), as a shell expects.
   if (outcome.signalNumber != 0) return TerminalSession::ReRaise(outcome.signalNumber);
   int code = 0;
@@ -683,6 +782,7 @@ int RunViewer(const ViewerOptions& options) {
     std::cerr << "termshade: cancelled loading " << outcome.cancelledStart << "\n";
     code = 1;
   }
+  if (recordError) code = 1;    // the recording was not made
   if (outcome.abandonedLoad) {  // no static destructors under a running importer
     std::cerr.flush();
     std::fflush(nullptr);

@@ -29,6 +29,8 @@ struct ViewerOptions {
   LoadLimits loadLimits;  ///< --memory-budget, --import-seconds
   double theta = 0.3;     ///< the view `r` returns to, radians (SPEC 2)
   double phi = 1.3;
+  /// --record FILE.cast: what the viewer shows, as an asciinema v2 recording; empty: none.
+  std::string recordPath;
 };
 
 /// Runs the full-screen viewer until the user quits; returns the exit code.

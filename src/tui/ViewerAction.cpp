@@ -50,11 +50,31 @@ ViewerAction ActionForChar(int ascii) {
       return ViewerAction::kAspectDown;
     case 'A':
       return ViewerAction::kAspectUp;
+    case 'y':
+      return ViewerAction::kShowRenderCommand;
     case 'q':
     case 'Q':
       return ViewerAction::kQuit;
     default:
       return ViewerAction::kNone;
+  }
+}
+
+bool MovesView(ViewerAction action) {
+  switch (action) {
+    case ViewerAction::kOrbitLeft:
+    case ViewerAction::kOrbitRight:
+    case ViewerAction::kOrbitUp:
+    case ViewerAction::kOrbitDown:
+    case ViewerAction::kCloser:
+    case ViewerAction::kFarther:
+    case ViewerAction::kResetView:
+    case ViewerAction::kRefit:
+    case ViewerAction::kAspectDown:
+    case ViewerAction::kAspectUp:
+      return true;
+    default:
+      return false;
   }
 }
 

@@ -23,6 +23,7 @@ constexpr std::array kKeys{
     ViewerKey{"L", "light mode: arrows move the sun", "L"},
     ViewerKey{"space", "turntable on / off", " "},
     ViewerKey{"a A", "cell aspect - / +", "aA"},
+    ViewerKey{"y", "show the render command of this view, copy it (OSC 52)", "y"},
     ViewerKey{"o", "open a model file (Tab completes)", "o"},
     ViewerKey{"n p", "next / previous model", "np"},
     ViewerKey{"Esc", "cancel a load", ""},

@@ -266,6 +266,8 @@ void ViewerState::Apply(ViewerAction action) {
     case ViewerAction::kAspectUp:
       cellAspect_ = std::min(4.0, cellAspect_ + kAspectStep);
       break;
+    case ViewerAction::kShowRenderCommand:  // the event loop composes it: it knows the frame
+      break;
     case ViewerAction::kQuit:
       quit_ = true;
       break;

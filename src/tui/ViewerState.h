@@ -87,6 +87,13 @@ class ViewerState {
   const RenderOptions& Render() const { return render_; }
   const ViewParams& View() const { return view_; }
   double CellAspect() const { return cellAspect_; }
+  /// The sun's angles (L mode); 0, 0: the default sun.
+  double SunAzimuthRadians() const { return sunAzimuth_; }
+  double SunElevationRadians() const { return sunElevation_; }
+  /// The distance the model is fitted at: the default one until `f` refits.
+  double FitRho() const { return fitRho_; }
+  /// The file shown ("" for the demo scene).
+  const std::string& ModelPath() const { return paths_[current_]; }
   std::string ModelLabel() const;
   size_t ModelCount() const { return paths_.size(); }
   /// The viewer's --up for models it loads; unset: each file's own.

@@ -5,7 +5,8 @@
 # 50 ms each way), sextants in truecolor on duck.dae at 160x48 (the colour
 # glyph modes are the ones whose frames outrun such a link). Asserts what a
 # user would: no key lost and the final screen equal to `termshade render` of
-# the same view, the picture settling and stopping soon after the keys, q
+# the same view, cell for cell with its colours (frames drawn while the view
+# moves are cheaper on such a link; the full one must follow), the picture settling and stopping soon after the keys, q
 # giving the prompt back soon, nothing of the viewer's left on the shell's
 # line. Caps are generous (times are the bench's: `termshade bench terminal
 # --link`); before flow control (issue 31) the picture kept turning for
@@ -135,6 +136,13 @@ screen | head -n 47 | sed 's/[[:space:]]*$//' >"$work/screen.txt"
 if cmp -s "$work/screen.txt" "$work/render.txt"; then pass; else
   fail "the screen over ssh differs from termshade render"
   diff "$work/screen.txt" "$work/render.txt" | head -10
+fi
+# Colours too: frames drawn while the view moved use fewer colours on this
+# link (MotionFrames); the full frame must have followed once it rested.
+tm capture-pane -t v -p -e >"$work/screen.ans"
+"$bin" render "$model" --size 160x47 --theta 2.3 --glyphs sextants --color truecolor --format ansi >"$work/render.ans"
+if python3 "$src/tests/tmux/ansi_cells.py" "$work/screen.ans" "$work/render.ans" 47 >/dev/null; then pass; else
+  fail "the screen's colours over ssh differ from termshade render's"
 fi
 
 # Step 4: the turntable for 8 s, then space: the picture stops soon.

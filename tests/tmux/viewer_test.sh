@@ -645,6 +645,44 @@ frame_matches_render pixel_size_sets_cell_aspect 24 "$src/data/sphere_cone.dat" 
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
 
+# 16. y: the status line shows the `termshade render` command of the view,
+# and OSC 52 puts it in tmux's paste buffer (set-clipboard on). Run, it
+# writes the screen's frame cell for cell, colours included: after orbiting,
+# zooming, another method, shading and cell aspect, the light moved (L), a
+# model path with a space; then again with colour off.
+tm set-option -s set-clipboard on
+cp "$src/data/sphere_cone.dat" "$work/two words.dat"
+run "clear; cd $work; LANG=C.UTF-8 LC_ALL=C.UTF-8 COLORTERM=truecolor $bin --glyphs quadrants 'two words.dat'; cd - >/dev/null"
+wait_for '\? help' 5 >/dev/null || fail "viewer did not start for y"
+tm send-keys -t v Right Right Up + m s a L Left Down L
+wait_for 'theta 0\.50 phi 1\.20 rho 4\.' 5 >/dev/null || fail "keys before y were not applied"
+settle
+view_command_matches() {  # NAME CAPTURE-OPTION: y, then the buffer's command against the screen
+  tm delete-buffer 2>/dev/null
+  tm send-keys -t v y
+  wait_for 'termshade render' 5 >/dev/null || fail "$1: y did not show the command"
+  settle
+  local command
+  command=$(tm show-buffer 2>/dev/null)
+  case $command in
+    "termshade render '$work/two words.dat' "*) pass ;;
+    *) fail "$1: no render command in tmux's buffer (OSC 52): '$command'" ;;
+  esac
+  screen | tail -n 1 | grep -q "^termshade render '" && pass || fail "$1: status line: $(screen | tail -n 1)"
+  tm capture-pane -t v -p $2 >"$work/screen.ans"
+  eval "\"\$bin\" ${command#termshade }" >"$work/render.ans" || fail "$1: the command failed: $command"
+  if python3 "$src/tests/tmux/ansi_cells.py" "$work/screen.ans" "$work/render.ans" 24 >/dev/null; then pass; else
+    fail "$1: the screen differs from: $command"
+    python3 "$src/tests/tmux/ansi_cells.py" "$work/screen.ans" "$work/render.ans" 24
+  fi
+}
+view_command_matches view_command_truecolor -e
+tm send-keys -t v c
+wait_for ' quadrants ' 5 >/dev/null
+view_command_matches view_command_mono -e
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
 run "clear; TERM=dumb $bin; echo exit=\$?"
 wait_for 'termshade render' 5 >/dev/null && pass || fail "dumb terminal message"
 wait_for 'exit=2' 5 >/dev/null && pass || fail "dumb terminal exit code"
