@@ -2,6 +2,7 @@
 // samples' geometry, per-sample face error, and the json samples.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -9,9 +10,11 @@
 #include "io/scenes/SceneGenerators.h"
 #include "io/write/FrameFormats.h"
 #include "raster/FrameError.h"
+#include "raster/FramePlan.h"
 #include "raster/Renderer.h"
 #include "shade/BlockGlyphs.h"
 #include "shade/GlyphInk.h"
+#include "shade/OrderedDither.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -106,18 +109,45 @@ TEST(GlyphInkTables, SortedAndHoldingPrintableAscii) {
   }
 }
 
-TEST(GlyphModes, WithoutColourTheGlyphIsExactlyTheCoveragePattern) {
+// Without colour the pattern modes dither: a covered sample is inked where
+// its shade exceeds the screen-fixed threshold there, and a covered cell
+// keeps at least one sample (its lowest threshold's) inked.
+TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
   for (const std::string& name : GeneratedSceneNames()) {
     const Scene scene = test::LoadScene("data/" + name + ".dat");
     for (GlyphMode mode : kPatternModes) {
       const ModeFrame frame = RenderMode(scene, mode, 60, 20);
+      RenderOptions options;
+      options.glyphs = mode;
+      const OrderedDither dither(PlanGlyphs(options).ditherOrder);
+      // The samples' shades: the one-sample frame at the sample camera (its faces are the
+      // samples').
+      RenderOptions single;
+      single.variant.samples = {1, 1};
+      CellBuffer fine(60 * frame.grid.across, 20 * frame.grid.down);
+      DepthBuffer fineDepth;
+      fineDepth.Resize(fine.WidthCells(), fine.HeightCells());
+      Renderer().Render(scene, SampleCamera(frame.camera, frame.grid), single, fineDepth, fine);
+      int partlyInked = 0;
       for (int row = 0; row < 20; ++row) {
         for (int col = 0; col < 60; ++col) {
           const SamplePattern covered = CoverageOfCell(frame.samples, frame.grid, col, row);
-          ASSERT_EQ(PatternOfGlyph(frame.cells.Glyph(col, row), frame.grid), covered)
+          std::array<uint8_t, 8> values{};
+          for (int n = 0; n < frame.grid.Count(); ++n) {
+            const int x = col * frame.grid.across + n % frame.grid.across;
+            const int y = row * frame.grid.down + n / frame.grid.across;
+            ASSERT_EQ(fine.FaceNumber(x, y), frame.samples.FaceNumber(x, y));
+            values[n] = fine.Intensity(x, y);
+          }
+          const SamplePattern shown = PatternOfGlyph(frame.cells.Glyph(col, row), frame.grid);
+          ASSERT_EQ(shown, dither.CellInk(values.data(), covered, frame.grid, col, row))
               << name << " " << GlyphModeName(mode) << " cell " << col << "," << row;
+          ASSERT_EQ(shown & ~covered, 0U);
+          ASSERT_EQ(shown != 0, covered != 0);
+          partlyInked += shown != covered ? 1 : 0;
         }
       }
+      EXPECT_GT(partlyInked, 0) << name << " " << GlyphModeName(mode);
     }
   }
 }
@@ -132,7 +162,7 @@ TEST(GlyphModes, BlocksAreAOneSampleFrameOfTwiceTheRowsAtHalfTheAspect) {
         for (int col = 0; col < 50; ++col) {
           const SamplePattern expected = (fine.cells.FaceNumber(col, 2 * row) != 0 ? 1U : 0U) |
                                          (fine.cells.FaceNumber(col, 2 * row + 1) != 0 ? 2U : 0U);
-          ASSERT_EQ(PatternOfGlyph(blocks.cells.Glyph(col, row), {1, 2}), expected)
+          ASSERT_EQ(CoverageOfCell(blocks.samples, {1, 2}, col, row), expected)
               << name << " aspect " << aspect << " cell " << col << "," << row;
         }
       }

@@ -8,6 +8,11 @@
 namespace termshade {
 namespace {
 
+// The mono pattern modes' Bayer matrix: 2^1 = 2x2, the finest pattern; 4x4
+// and 8x8 scored lower blurred SSIM in every mode (`termshade bench fidelity`,
+// docs/glyphs-and-fidelity.md#shade-without-colour-ordered-dither).
+constexpr int kMonoDitherOrder = 1;
+
 // The near plane sits a tiny, scale-relative distance in front of the eye.
 double NearDistance(const Scene& scene) {
   return 1e-6 * (scene.diagonalModelUnits > 0.0 ? scene.diagonalModelUnits : 1.0);
@@ -91,10 +96,12 @@ Camera SampleCamera(const Camera& camera, SampleGrid grid) {
 }
 
 GlyphPlan PlanGlyphs(const RenderOptions& options) {
+  const bool patterned = options.glyphs != GlyphMode::kRamp && options.glyphs != GlyphMode::kAscii;
   return {.mode = options.glyphs,
           .twoColour = options.twoColour,
           .ramp = &options.ramp,
           .pattern = PatternSampleGrid(options),
+          .ditherOrder = patterned && !options.twoColour ? kMonoDitherOrder : 0,
           .writeDepth = options.keepDepth};
 }
 

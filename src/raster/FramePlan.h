@@ -76,7 +76,11 @@ struct GlyphPlan {
   bool twoColour = false;           ///< see RenderOptions::twoColour
   const ShadeRamp* ramp = nullptr;  ///< the options'
   SampleGrid pattern;               ///< the glyph's parts; the frame's grid is a multiple of it
-  bool writeDepth = true;           ///< a cell's depth is its nearest sample's
+  /// Without colour, the block modes and braille ink a part when its shade
+  /// exceeds the threshold of a Bayer matrix of side 2^ditherOrder at its
+  /// screen position (OrderedDither); 0: every covered part is inked.
+  int ditherOrder = 0;
+  bool writeDepth = true;  ///< a cell's depth is its nearest sample's
 };
 
 /// Everything about a frame resolved once from (scene, camera, options):

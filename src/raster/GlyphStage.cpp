@@ -232,10 +232,24 @@ void FillBackground(CellBuffer& cells) {
 }
 
 // The glyph and tones of a cell whose samples (or parts) show more than one face.
+// Where a cell is, for the ordered dither's screen-fixed thresholds.
+struct CellPlace {
+  const OrderedDither& dither;
+  int col = 0;
+  int row = 0;
+};
+
+// The glyph of a pattern mode without colour: the ordered dither of the
+// covered samples' (or parts') shades.
+char32_t DitheredGlyph(const CellSamples& s, const GlyphPlan& plan, const CellPlace& place) {
+  return PatternGlyph(plan.mode, place.dither.CellInk(s.values.data(), s.covered, plan.pattern,
+                                                      place.col, place.row));
+}
+
 template <int N>
 char32_t MixedCell(const CellSamples& s, const GlyphPlan& plan, SamplePattern all,
-                   const std::array<int16_t, 256>& levelOf, AsciiMatcher& ascii, Tone& fore,
-                   Tone& back) {
+                   const std::array<int16_t, 256>& levelOf, AsciiMatcher& ascii,
+                   const CellPlace& place, Tone& fore, Tone& back) {
   const GlyphMode mode = plan.mode;
   switch (mode) {
     case GlyphMode::kRamp:
@@ -247,14 +261,14 @@ char32_t MixedCell(const CellSamples& s, const GlyphPlan& plan, SamplePattern al
                             : ascii.MatchInk(s.values.data(), s.covered);
     case GlyphMode::kBraille:
       fore = ToneOf<N>(s, s.covered);
-      return PatternGlyph(mode, s.covered);
+      return plan.ditherOrder != 0 ? DitheredGlyph(s, plan, place) : PatternGlyph(mode, s.covered);
     default: {  // blocks, quadrants, sextants
       SamplePattern ink = s.covered;
       if (plan.twoColour) ink = BrighterHalf<N>(s);
       if (ink == 0) ink = all;
       fore = ToneOf<N>(s, ink);
       if (plan.twoColour) back = ToneOf<N>(s, all & ~ink);
-      return PatternGlyph(mode, ink);
+      return plan.ditherOrder != 0 ? DitheredGlyph(s, plan, place) : PatternGlyph(mode, ink);
     }
   }
 }
@@ -271,6 +285,9 @@ void GlyphStage::Compose(const Samples& in, const GlyphPlan& plan, CellBuffer& c
     for (int i = 0; i < 256; ++i) {
       levelOf_[i] = static_cast<int16_t>(plan.ramp->LevelFor(i / 255.0));
     }
+  }
+  if (plan.ditherOrder != 0 && dither_.Side() != 1 << plan.ditherOrder) {
+    dither_ = OrderedDither(plan.ditherOrder);
   }
   uniformAscii_.fill(0);  // ascii glyphs of one-face cells, by intensity, filled as met
   FillBackground(cells);
@@ -298,6 +315,7 @@ void GlyphStage::ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffe
   CellSamples fine, parts;
   fine.count = count;
   const size_t cellCount = in.frame.CellCount();
+  const auto widthCells = static_cast<size_t>(cells.WidthCells());
   for (size_t index = in.frame.NextTouched(0); index < cellCount;
        index = in.frame.NextTouched(index + 1)) {
     // Step 1: the cell's samples and whether they all show one face.
@@ -323,6 +341,8 @@ void GlyphStage::ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffe
     // Step 2: the glyph and its colours; a cell of one face has one tone (a full block).
     Tone fore, back;
     char32_t glyph = U' ';
+    const CellPlace place{dither_, static_cast<int>(index % widthCells),
+                          static_cast<int>(index / widthCells)};
     if (oneFace) {
       fore = {firstFace, fine.values[0]};
       switch (mode) {
@@ -339,11 +359,16 @@ void GlyphStage::ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffe
           break;
         }
         default:
-          glyph = PatternGlyph(mode, all);
+          if (plan.ditherOrder != 0) {
+            fine.covered = all;  // one face: every part covered, every shade the same
+            glyph = DitheredGlyph(fine, plan, place);
+          } else {
+            glyph = PatternGlyph(mode, all);
+          }
           break;
       }
     } else if (!reduce) {
-      glyph = MixedCell<kCount>(fine, plan, all, levelOf_, ascii_, fore, back);
+      glyph = MixedCell<kCount>(fine, plan, all, levelOf_, ascii_, place, fore, back);
     } else {
       // The colour quadrants' (1x2 samples a part) and blocks' (2x2) parts unrolled.
       if (kCount == 8 && plan.pattern == SampleGrid{2, 2}) {
@@ -355,11 +380,11 @@ void GlyphStage::ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffe
       }
       // The colour blocks' and quadrants' parts; other forced grids at run time.
       if (parts.count == 2) {
-        glyph = MixedCell<2>(parts, plan, all, levelOf_, ascii_, fore, back);
+        glyph = MixedCell<2>(parts, plan, all, levelOf_, ascii_, place, fore, back);
       } else if (parts.count == 4) {
-        glyph = MixedCell<4>(parts, plan, all, levelOf_, ascii_, fore, back);
+        glyph = MixedCell<4>(parts, plan, all, levelOf_, ascii_, place, fore, back);
       } else {
-        glyph = MixedCell<0>(parts, plan, all, levelOf_, ascii_, fore, back);
+        glyph = MixedCell<0>(parts, plan, all, levelOf_, ascii_, place, fore, back);
       }
     }
     cells.Glyphs()[index] = glyph;

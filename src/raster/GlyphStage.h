@@ -9,6 +9,7 @@
 #include "raster/FramePlan.h"
 #include "raster/SampleFrame.h"
 #include "shade/AsciiMatcher.h"
+#include "shade/OrderedDither.h"
 
 namespace termshade {
 
@@ -17,7 +18,9 @@ namespace termshade {
 /// intensity) and writes each cell's glyph and its fg/bg (face, intensity) pairs.
 /// Keeps the ascii matcher's cache and the ramp's level table between frames.
 /// Cells no sample reaches are filled as background at once; a cell whose
-/// samples show one face takes its tone without a split or a match.
+/// samples show one face takes its tone without a split or a match. Without
+/// colour, the pattern modes' glyphs are the ordered dither of the covered
+/// samples' shades (plan.ditherOrder), their tones those of the covered samples.
 class GlyphStage {
  public:
   /// A frame of samples (faces and depth per sample, the grid) and the
@@ -36,7 +39,8 @@ class GlyphStage {
   void ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffer& cells, DepthBuffer& depth);
 
   AsciiMatcher ascii_;
-  int levelCount_ = 0;                  ///< the ramp's level count levelOf_ is for
+  OrderedDither dither_{1};  ///< the plan's matrix when it dithers (rebuilt when the order changes)
+  int levelCount_ = 0;       ///< the ramp's level count levelOf_ is for
   std::array<int16_t, 256> levelOf_{};  ///< ramp level by intensity
   /// This frame's ascii glyph of a one-face cell by intensity; 0 unknown.
   std::array<char32_t, 256> uniformAscii_{};

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "shade/BlockGlyphs.h"
+#include "shade/OrderedDither.h"
 
 namespace termshade {
 namespace {
@@ -164,6 +165,26 @@ std::array<uint8_t, 32> ShapeLevels(const CellSamples& s) {
   return levels;
 }
 
+// Without colour: the covered samples whose shade exceeds the dither's
+// threshold at their screen position; if none, the covered one of lowest
+// threshold (the first in row-major order on a tie).
+SamplePattern DitheredInk(const CellSamples& s, SampleGrid pattern, const OrderedDither& dither,
+                          int col, int row) {
+  SamplePattern ink = 0, lowest = 0;
+  int lowestThreshold = 1000;
+  for (int n = 0; n < pattern.Count(); ++n) {
+    if (((s.covered >> n) & 1U) == 0) continue;
+    const int x = col * pattern.across + n % pattern.across;
+    const int y = row * pattern.down + n / pattern.across;
+    if (dither.Inks(s.values[n], x, y)) ink |= SamplePattern{1} << n;
+    if (dither.Threshold(x, y) < lowestThreshold) {
+      lowestThreshold = dither.Threshold(x, y);
+      lowest = SamplePattern{1} << n;
+    }
+  }
+  return ink != 0 ? ink : lowest;
+}
+
 }  // namespace
 
 void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan& plan,
@@ -217,6 +238,8 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan
     if (reduce) ReduceToParts(fine, grid, plan.pattern, parts);
     const CellSamples& s = reduce ? parts : fine;
     // Step 2: the glyph and its colours.
+    const int col = static_cast<int>(index % static_cast<size_t>(cells.WidthCells()));
+    const int row = static_cast<int>(index / static_cast<size_t>(cells.WidthCells()));
     SamplePattern ink = s.covered;
     Tone fore, back;
     char32_t glyph = U' ';
@@ -234,6 +257,10 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan
       case GlyphMode::kBraille:
         fore = oneFace ? Tone{firstFace, s.values[0]} : ToneOf(s, s.covered);
         glyph = PatternGlyph(mode, s.covered);
+        if (plan.ditherOrder != 0) {
+          const OrderedDither dither(plan.ditherOrder);
+          glyph = PatternGlyph(mode, DitheredInk(s, plan.pattern, dither, col, row));
+        }
         break;
       default:          // blocks, quadrants, sextants
         if (oneFace) {  // one tone: a full block
@@ -246,6 +273,10 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan
           if (plan.twoColour) back = ToneOf(s, all & ~ink);
         }
         glyph = PatternGlyph(mode, ink);
+        if (plan.ditherOrder != 0) {
+          const OrderedDither dither(plan.ditherOrder);
+          glyph = PatternGlyph(mode, DitheredInk(s, plan.pattern, dither, col, row));
+        }
         break;
     }
     cells.Glyphs()[index] = glyph;
