@@ -125,7 +125,9 @@ TEST(GlyphStageMono, HalfShadeIsACheckerboard) {
       for (int col = 0; col < kCols; ++col) {
         ASSERT_EQ(InkedSamples(mode, cells.Glyph(col, row)), perCell / 2)
             << GlyphModeName(mode) << " " << col << "," << row;
-        if (mode == GlyphMode::kQuadrants) ASSERT_EQ(cells.Glyph(col, row), U'\u259A');
+        if (mode == GlyphMode::kQuadrants) {
+          ASSERT_EQ(cells.Glyph(col, row), U'\u259A');
+        }
         if (mode == GlyphMode::kBlocks) {  // upper and lower halves alternate by column
           ASSERT_EQ(cells.Glyph(col, row), col % 2 == 0 ? U'\u2580' : U'\u2584');
         }
