@@ -181,8 +181,11 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
   DetailLevels result;
   result.exactTriangles = exact.triangles.size();
   if (exact.triangles.size() < options.minSourceTriangles) return result;
+  // Polled between steps: one meshopt_simplify call (the first level's is
+  // most of the build) runs to its end.
   auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(); };
   Source source = MakeSource(exact);
+  if (cancelled()) return result;
   const size_t vertexCount = exact.verticesWorld.size();
   std::vector<uint32_t> newIndex(vertexCount, kNone);
   // The joined indices are only the first level's input: moved, not copied
@@ -194,6 +197,7 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
   if (current.size() / 3 >
       kRepeatCheckTrianglesPerVertex * JoinedVertexCount(current, vertexCount)) {
     DropRepeatedTriangles(current);
+    if (cancelled()) return result;
     if (current.size() / 3 < options.minSourceTriangles) {
       result.skippedBecause = "its triangles repeat one another: fewer than " +
                               std::to_string(options.minSourceTriangles) + " differ";
@@ -214,7 +218,7 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
         meshopt_simplify(simplified.data(), current.data(), current.size(), source.positions.data(),
                          vertexCount, sizeof(float) * 3, target * 3, budget, 0, &stepError);
     // Step 2: stop where the error budget (or the topology) stops the collapse.
-    if (indexCount == 0 || indexCount > current.size() * 3 / 4) break;
+    if (indexCount == 0 || indexCount > current.size() * 3 / 4 || cancelled()) break;
     relativeError += stepError;
     simplified.resize(indexCount);
     result.levels.push_back(

@@ -44,7 +44,7 @@ struct DetailBuildOptions {
   size_t minTriangles = 1000;         ///< no level below this
   /// Largest deviation a level may have, relative to the model's extent.
   double maxRelativeError = 0.02;
-  const std::atomic<bool>* cancel = nullptr;  ///< polled between levels
+  const std::atomic<bool>* cancel = nullptr;  ///< polled between steps and levels
 };
 
 /// Builds the levels of `exact` (none for a small scene, or when cancelled).

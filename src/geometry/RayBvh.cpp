@@ -456,6 +456,7 @@ RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel, int thre
   for (const SceneTriangle& t : scene.triangles) {
     for (const uint32_t v : t.vertices) sceneBox.Add(scene.verticesWorld[v]);
   }
+  if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return {};
   std::vector<Keyed> keys = SortedByMorton(scene, sceneBox);
   if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return {};
   // Step 2: the tree, depth first from a root node (a root that would be a

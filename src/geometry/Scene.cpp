@@ -178,7 +178,8 @@ void MapFacesExplicitly(Scene& scene, size_t face, size_t faceCount) {
 // the z-buffer gives a tie to the lower face anyway.
 void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
                       std::vector<Vec3>& cornersScratch,
-                      std::vector<CornerTriangle>& trianglesScratch, int64_t& pointTests) {
+                      std::vector<CornerTriangle>& trianglesScratch, int64_t& pointTests,
+                      const std::atomic<bool>* cancel) {
   const auto corners = faces.Face(face);
   const auto before = face > 0 ? faces.Face(face - 1) : corners;
   if (face > 0 && std::equal(corners.begin(), corners.end(), before.begin(), before.end())) {
@@ -197,7 +198,7 @@ void AddFaceTriangles(Scene& scene, const FaceList& faces, size_t face,
     cornersScratch.push_back(scene.verticesWorld[v]);
     finite = finite && IsFinite(scene.verticesWorld[v]);
   }
-  if (finite) TriangulatePolygon(cornersScratch, trianglesScratch, &pointTests);
+  if (finite) TriangulatePolygon(cornersScratch, trianglesScratch, &pointTests, cancel);
   const bool explicitMaps = !scene.faceTriangleStarts.empty();
   if (!explicitMaps && trianglesScratch.size() != 1) {
     MapFacesExplicitly(scene, face, faces.FaceCount());
@@ -344,7 +345,16 @@ Mesh Scene::SourceMesh() const {
   return mesh;
 }
 
-Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
+namespace {
+
+// PrepareScene's steps; nullopt as soon as a step sees `cancel` set.
+std::optional<Scene> PrepareSceneSteps(Mesh mesh, std::optional<UpAxis> upOverride,
+                                       const std::atomic<bool>* cancel) {
+  // Polled between steps, every kFacesPerCancelPoll faces of the general
+  // triangulation and every kEarsPerCancelPoll ears of a face.
+  const auto cancelled = [cancel] {
+    return cancel != nullptr && cancel->load(std::memory_order_relaxed);
+  };
   Scene scene;
   scene.name = mesh.name;
   scene.upAxis = upOverride.value_or(mesh.upAxisFile);
@@ -359,6 +369,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   // box, in the file's vertex array; of the file's vertices, only those world
   // space does not give back are kept.
   TakeVerticesAsWorld(scene, std::move(mesh.verticesFile));
+  if (cancelled()) return std::nullopt;
   const size_t vertexCount = scene.verticesWorld.size();
 
   // Step 2: inside-out closed parts turned outward, once.
@@ -372,6 +383,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     adjacency.reset();
     adjacency = std::make_unique<EdgeAdjacency>(vertexCount, faces);
   }
+  if (cancelled()) return std::nullopt;
 
   // Step 3: whether the model is a convex closed connected surface; the edge
   // uses are freed before the triangles and planes take their place.
@@ -379,6 +391,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
                                           scene.diagonalModelUnits, knownClosed);
   adjacency->ReleasePages();
   adjacency.reset();
+  if (cancelled()) return std::nullopt;
 
   // Step 4: per-face triangles (a face of n corners gives at most n - 2); the
   // faces are dropped when the triangles give them back.
@@ -393,9 +406,11 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
     std::vector<CornerTriangle> trianglesScratch;
     int64_t pointTests = ModelPointTestBudget(cornerCount);
     for (size_t face = 0; face < faceCount; ++face) {
-      AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch, pointTests);
+      if (face % kFacesPerCancelPoll == 0 && cancelled()) return std::nullopt;
+      AddFaceTriangles(scene, faces, face, cornersScratch, trianglesScratch, pointTests, cancel);
     }
   }
+  if (cancelled()) return std::nullopt;
   // Triangles repeated over and over (hostile input: a triangle a million
   // times, a 1000-gon 20,000 times over the same corners) drawn once.
   const size_t repeated = DropRepeatedSceneTriangles(scene, faceCount);
@@ -407,6 +422,7 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
   } else {
     scene.source.faces = std::move(faces);
   }
+  if (cancelled()) return std::nullopt;
 
   // Step 5: per-face planes, the faces split in ranges over the load threads;
   // where every face is its one triangle, its corners as a fixed-size array
@@ -426,9 +442,22 @@ Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
           }
         }
       });
+  if (cancelled()) return std::nullopt;
   scene.clusters = BuildClusters(scene);
+  if (cancelled()) return std::nullopt;
   scene.convexClosedSolid = convex && !scene.triangles.empty();
   return scene;
+}
+
+}  // namespace
+
+Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride) {
+  return *PrepareSceneSteps(std::move(mesh), upOverride, nullptr);
+}
+
+std::optional<Scene> PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride,
+                                  const std::atomic<bool>& cancel) {
+  return PrepareSceneSteps(std::move(mesh), upOverride, &cancel);
 }
 
 }  // namespace termshade

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -90,5 +91,12 @@ struct Scene {
 /// upOverride when given, else mesh.upAxisFile. Faces with non-finite
 /// coordinates keep their number but get no triangles.
 Scene PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride = std::nullopt);
+/// The same, stopped early (nullopt, nothing kept) once `cancel` is set: it
+/// is polled between the steps, every kFacesPerCancelPoll faces and every
+/// kEarsPerCancelPoll ears of one face.
+std::optional<Scene> PrepareScene(Mesh mesh, std::optional<UpAxis> upOverride,
+                                  const std::atomic<bool>& cancel);
+/// Faces triangulated one by one between two looks at a cancel flag.
+inline constexpr size_t kFacesPerCancelPoll = 4096;
 
 }  // namespace termshade

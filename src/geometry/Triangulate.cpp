@@ -79,9 +79,14 @@ class EarClipper {
 
   // Emits triangles of local (kept-list) indices.
   template <typename Emit>
-  void Run(Emit emit) {
+  void Run(Emit emit, const std::atomic<bool>* cancel) {
     uint32_t start = 0;
+    uint32_t ears = 0;
     while (remaining_ > 3) {
+      if (++ears % kEarsPerCancelPoll == 0 && cancel != nullptr &&
+          cancel->load(std::memory_order_relaxed)) {
+        return;
+      }
       const uint32_t ear = FindEar(start);
       emit(prev_[ear], ear, next_[ear]);
       start = Unlink(ear);
@@ -153,7 +158,7 @@ int64_t ModelPointTestBudget(size_t cornerCount) {
 }
 
 void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangle>& trianglesOut,
-                        int64_t* modelBudget) {
+                        int64_t* modelBudget, const std::atomic<bool>* cancel) {
   // A triangle of three distinct consecutive corners: what the ear clipper
   // below gives for it (its one ear, emitted from the last corner), without
   // the allocations.
@@ -170,9 +175,11 @@ void TriangulatePolygon(std::span<const Vec3> corners, std::vector<CornerTriangl
   const int64_t budget =
       modelBudget != nullptr ? std::min(kPointTestBudget, *modelBudget) : kPointTestBudget;
   EarClipper clipper(ProjectToDominantPlane(corners, kept, normal), budget);
-  clipper.Run([&](uint32_t a, uint32_t b, uint32_t c) {
-    trianglesOut.push_back({kept[a], kept[b], kept[c]});
-  });
+  clipper.Run(
+      [&](uint32_t a, uint32_t b, uint32_t c) {
+        trianglesOut.push_back({kept[a], kept[b], kept[c]});
+      },
+      cancel);
   if (modelBudget != nullptr) *modelBudget -= budget - std::max<int64_t>(clipper.BudgetLeft(), 0);
 }
 

@@ -24,8 +24,8 @@ LoadJob::LoadJob(std::string path, std::shared_ptr<const Scene> scene, UpAxis up
   shared_->preparing.store(true);
   worker_ = StartWorkerThread([shared = shared_, scene = std::move(scene), upAxis]() mutable {
     Mesh mesh = scene->SourceMesh();  // the shown scene stays whole until the new one replaces it
-    shared->result.emplace(PrepareScene(std::move(mesh), upAxis));
     scene.reset();
+    Prepare(*shared, std::move(mesh), upAxis);
     Finish(*shared);
   });
 }
@@ -38,9 +38,18 @@ void LoadJob::Load(Shared& shared, const std::string& path, std::optional<UpAxis
   Loaded<Mesh> mesh = LoadViewerMesh(path, options);
   if (mesh.Ok()) {
     shared.preparing.store(true);
-    shared.result.emplace(PrepareScene(std::move(mesh.Value()), upAxis));
+    Prepare(shared, std::move(mesh.Value()), upAxis);
   } else {
     shared.result.emplace(mesh.Error());
+  }
+}
+
+void LoadJob::Prepare(Shared& shared, Mesh mesh, std::optional<UpAxis> upAxis) {
+  std::optional<Scene> scene = PrepareScene(std::move(mesh), upAxis, shared.cancel);
+  if (scene) {
+    shared.result.emplace(std::move(*scene));
+  } else {
+    shared.result.emplace(LoadError{"", 0, 0, "cancelled"});  // dropped by the canceller
   }
 }
 

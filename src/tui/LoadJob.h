@@ -44,8 +44,9 @@ class LoadJob {
   /// Asks the loader to stop (it polls the flag); returns at once.
   void Cancel() { shared_->cancel.store(true); }
   /// Cancel, then waits up to kStopWaitMs for the worker to end: a load in
-  /// the import helper does (the helper killed and reaped); preparing the
-  /// scene does not poll the flag. True when it has ended (then Take may join it).
+  /// the import helper does (the helper killed and reaped), and so does the
+  /// scene's preparation, between two of its steps. True when it has ended
+  /// (then Take may join it).
   bool Stop();
   static constexpr int kStopWaitMs = 150;
   /// The result, once Finished(); joins the worker.
@@ -62,6 +63,8 @@ class LoadJob {
   };
   static void Load(Shared& shared, const std::string& path, std::optional<UpAxis> upAxis,
                    LoadLimits limits);
+  /// PrepareScene, stopped by the job's cancel flag (then a "cancelled" error).
+  static void Prepare(Shared& shared, Mesh mesh, std::optional<UpAxis> upAxis);
   static void Finish(Shared& shared);
 
   std::string path_;

@@ -56,6 +56,12 @@ class SceneJob {
   SceneJob(const SceneJob&) = delete;
   SceneJob& operator=(const SceneJob&) = delete;
 
+  /// Asks the build to stop and lets go of the scene (the worker drops its
+  /// own reference and the result as it ends); ForScene is then empty.
+  void Cancel() {
+    shared_->cancel.store(true);
+    scene_.reset();
+  }
   /// The scene the result is of.
   const std::shared_ptr<const Scene>& ForScene() const { return scene_; }
   int ReadyFd() const { return shared_->ready.ReadFd(); }

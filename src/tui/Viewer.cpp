@@ -28,6 +28,7 @@
 #include "tui/MotionFrames.h"
 #include "tui/PathCompletion.h"
 #include "tui/PromptPath.h"
+#include "tui/RetiredJobs.h"
 #include "tui/SceneJob.h"
 #include "tui/ScreenPainter.h"
 #include "tui/StatusFields.h"
@@ -149,7 +150,7 @@ class EventLoop {
         wakeWithin(static_cast<int>(std::max<long long>(0, wait)));
       }
       wakeWithin(motion_.WakeMs(now, turning_));  // the full frame after cheap ones
-      if (job_) wakeWithin(kLoadProgressPollMs);
+      if (job_ || retired_.Count() > 0) wakeWithin(kLoadProgressPollMs);
       pollfd fds[5] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
                        {job_ ? job_->ReadyFd() : -1, POLLIN, 0},
@@ -181,7 +182,7 @@ class EventLoop {
     }
     AwaitAnswers(kQuitAnswerWait);
     // A worker still loading is asked to stop, and left to end alone if it runs on.
-    outcome.abandonedLoad = abandonedLoad_ || (job_ && !job_->Stop()) ||
+    outcome.abandonedLoad = retired_.Busy() || (job_ && !job_->Stop()) ||
                             (detailJob_ && !detailJob_->Finished()) ||
                             (hierarchyJob_ && !hierarchyJob_->Finished());
     if (cancelledStart_) outcome.cancelledStart = cancelledName_;
@@ -243,7 +244,10 @@ class EventLoop {
 
   // Starts the load the state asked for, unless one is running already.
   void StartRequestedLoad() {
-    if (job_) return;
+    if (job_ || !state_.LoadRequested()) return;
+    // The scene is about to change: its builds stop, and the load waits for them.
+    RetireSceneJobs();
+    if (retired_.Busy()) return;
     std::optional<LoadRequest> request = state_.TakeLoadRequest();
     if (!request) return;
     jobRequest_ = std::move(*request);
@@ -268,17 +272,16 @@ class EventLoop {
   // up and no load runs; taken when done; dropped when the scene changed.
   void UpdateDetailJob() {
     if (detailJob_ && detailJob_->ForScene() != state_.SharedScene()) {
-      detailJob_.reset();
-      abandonedLoad_ = true;  // a cancelled build may still be running
-      ReturnFreedMemory();    // a finished one held the replaced scene until now
+      retired_.Keep(std::move(detailJob_));  // a cancelled build may still be running
+      ReturnFreedMemory();                   // a finished one held the replaced scene until now
     }
     if (detailJob_ && detailJob_->Finished()) {
       state_.SetLevels(detailJob_->ForScene(), detailJob_->Take());
       detailJob_.reset();
       dirty_ = true;
     }
-    if (!detailJob_ && !hierarchyJob_ && !job_ && framesDrawn_ > 0 && state_.WantsLevels() &&
-        !WantsHierarchy()) {
+    if (!detailJob_ && !hierarchyJob_ && MayStartBuild() && framesDrawn_ > 0 &&
+        state_.WantsLevels() && !WantsHierarchy()) {
       detailJob_ = std::make_unique<DetailJob>(state_.SharedScene(), BuildLevels);
     }
   }
@@ -302,8 +305,7 @@ class EventLoop {
   void UpdateHierarchyJob() {
     const std::shared_ptr<const Scene>& scene = state_.SharedScene();
     if (hierarchyJob_ && hierarchyJob_->ForScene() != scene) {
-      abandonedLoad_ = abandonedLoad_ || !hierarchyJob_->Finished();  // may still be running
-      hierarchyJob_.reset();
+      retired_.Keep(std::move(hierarchyJob_));  // may still be running
       ReturnFreedMemory();
     }
     if (hierarchyJob_ && hierarchyJob_->Finished()) {
@@ -311,16 +313,29 @@ class EventLoop {
       hierarchyJob_->ForScene()->hierarchy.Attach(std::move(bvh));
       hierarchyJob_.reset();
     }
-    if (!hierarchyJob_ && !detailJob_ && !job_ && framesDrawn_ > 0 && WantsHierarchy()) {
+    if (!hierarchyJob_ && !detailJob_ && MayStartBuild() && framesDrawn_ > 0 && WantsHierarchy()) {
       hierarchyTriedFor_ = scene;
       hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
     }
   }
 
+  // No build starts beside a load, one asked for, or a cancelled worker still ending.
+  bool MayStartBuild() { return !job_ && !state_.LoadRequested() && !retired_.Busy(); }
+
+  // Stops the scene's background builds (a load will replace the scene); an
+  // unfinished hierarchy is tried again if the scene stays.
+  void RetireSceneJobs() {
+    if (hierarchyJob_ && !hierarchyJob_->Finished()) {
+      hierarchyTriedFor_.reset();
+      retired_.Keep(std::move(hierarchyJob_));
+    }
+    if (detailJob_ && !detailJob_->Finished()) retired_.Keep(std::move(detailJob_));
+  }
+
   void CancelLoad() {
     const std::string name = LoadName();
     cancelledName_ = name;
-    abandonedLoad_ = abandonedLoad_ || !job_->Stop();
+    if (!job_->Stop()) retired_.Keep(std::move(job_));
     job_.reset();  // its result, if any, is dropped
     ReturnFreedMemory();
     state_.SetMessage("cancelled loading " + name);
@@ -693,6 +708,7 @@ class EventLoop {
   std::unique_ptr<DetailJob> detailJob_;          ///< levels of detail being built, if any
   std::unique_ptr<HierarchyJob> hierarchyJob_;    ///< the scene's hierarchy being built, if any
   std::weak_ptr<const Scene> hierarchyTriedFor_;  ///< the scene a hierarchy was last built for
+  RetiredJobs retired_;                           ///< cancelled jobs whose workers may still run
   long framesDrawn_ = 0;
   int lastDetailLevel_ = 0;  ///< the level of detail the last frame drew (0: exact)
   LoadRequest jobRequest_;
@@ -700,7 +716,6 @@ class EventLoop {
   int completionMatches_ = 1;     ///< names the last Tab matched (1: no hint)
   bool cancelledStart_ = false;   ///< Esc while the first model loaded
   std::string cancelledName_;     ///< what the last Esc cancelled
-  bool abandonedLoad_ = false;    ///< a cancelled worker may still be running
   bool prompting_ = false;
   bool dirty_ = true;
   InputDecoder input_;

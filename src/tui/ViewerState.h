@@ -52,6 +52,8 @@ class ViewerState {
   void RequestOpen(const std::string& path);
   /// The load asked for by RequestOpen or n/p, if any; taking it clears it.
   std::optional<LoadRequest> TakeLoadRequest();
+  /// Whether a load is asked for and not yet taken.
+  bool LoadRequested() const { return pending_.has_value(); }
   /// Applies a finished load: the model is shown, or the current one kept
   /// with the error as the message. A failed n/p still counts as a step, so
   /// the next n moves on past the failed model.
