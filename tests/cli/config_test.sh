@@ -8,28 +8,8 @@ bin=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-check() {  # check NAME EXPECTED_CODE EXPECTED_STDERR_SUBSTRING -- command...
-  local name=$1 want=$2 message=$3
-  shift 4
-  timeout 10 "$@" >"$work/out" 2>"$work/err" </dev/null
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL $name: exit $got, expected $want; stderr: $(head -c 400 "$work/err")"
-    failed=$((failed + 1))
-  elif [ -n "$message" ] && ! grep -qF -- "$message" "$work/err"; then
-    echo "FAIL $name: stderr lacks '$message'; it was: $(head -c 400 "$work/err")"
-    failed=$((failed + 1))
-  else
-    passed=$((passed + 1))
-  fi
-}
-expect() {  # expect NAME COMMAND...
-  local name=$1
-  shift
-  if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
-}
+CHECK_TIMEOUT=10
+source "$src/tests/support/checks.sh"
 cube=$src/data/cube.dat
 mkdir -p "$work/xdg/termshade"
 printf 'glyphs = "braille"\n' >"$work/xdg/termshade/config.toml"
@@ -78,6 +58,4 @@ printf 'glyphs = "\033]0;owned\007"\n' >"$work/escape.toml"
 check config_escape_bytes 2 "" -- "$bin" render "$cube" --config "$work/escape.toml"
 expect config_escape_bytes_escaped bash -c "! grep -q $'\\x1b' '$work/err'"
 check config_after_bench_refused 2 "" -- "$bin" bench models "$cube" --config "$work/mine.toml"
-
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

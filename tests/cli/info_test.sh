@@ -7,13 +7,7 @@ bin=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-expect() {  # expect NAME COMMAND...
-  local name=$1
-  shift
-  if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
-}
+source "$src/tests/support/checks.sh"
 field() {  # field JSON-LINE-FILE LINE KEY: the value, as Python prints it
   python3 -c 'import json, sys; print(json.loads(open(sys.argv[1]).read().splitlines()[int(sys.argv[2])])[sys.argv[3]])' "$@"
 }
@@ -56,6 +50,4 @@ expect others_reported test "$(grep -c '^  reader' "$work/mixed.txt")" -eq 2
 expect bad_format_exit_2 test $? -eq 2
 "$bin" info >/dev/null 2>&1
 expect no_model_exit_2 test $? -eq 2
-
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -9,17 +9,11 @@ bin=$1
 src=$2
 work=$(mktemp -d)
 trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+source "$src/tests/support/checks.sh"
 mkdir "$work/bin"
 ln -s "$(realpath "$bin")" "$work/bin/termshade"
 export PATH="$work/bin:$PATH" LANG=C.UTF-8 TERM=xterm-256color
 recipes=$src/tools/previewers
-passed=0
-failed=0
-expect() {  # expect NAME COMMAND...
-  local name=$1
-  shift
-  if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
-}
 # A picture of COLS x ROWS cells in colour, with no byte a terminal would act on beyond SGR.
 is_picture() {  # is_picture FILE COLS ROWS
   python3 - "$@" <<'PY'
@@ -77,6 +71,4 @@ for case in "xterm-kitty C.UTF-8 ansi sextants" "xterm-256color C.UTF-8 ansi qua
   TERM=$1 LANG=$2 LC_ALL= termshade render --size 30x10 --format "$3" --glyphs "$4" -- "$cube" >"$work/asked.out"
   expect "glyphs_auto_${1}_${2}_$3_is_$4" cmp -s "$work/auto.out" "$work/asked.out"
 done
-
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -7,30 +7,9 @@ bin=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
+source "$src/tests/support/checks.sh"
 
-check() {  # check NAME EXPECTED_CODE EXPECTED_STDERR_SUBSTRING -- command...
-  local name=$1 want=$2 message=$3
-  shift 4
-  "$@" >"$work/out" 2>"$work/err" </dev/null
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL $name: exit $got, expected $want; stderr: $(head -c 600 "$work/err")"
-    failed=$((failed + 1))
-  elif [ -n "$message" ] && ! grep -qF -- "$message" "$work/err"; then
-    echo "FAIL $name: stderr lacks '$message'; it was: $(head -c 600 "$work/err")"
-    failed=$((failed + 1))
-  else
-    passed=$((passed + 1))
-  fi
-}
 
-expect() {  # expect NAME CONDITION-COMMAND...
-  local name=$1
-  shift
-  if "$@"; then passed=$((passed + 1)); else echo "FAIL $name"; failed=$((failed + 1)); fi
-}
 
 # A model a user keeps goldens of, and the same model with one vertex moved.
 # cube.dat: vertex 7 is (1 1 1), a corner the default view sees; the
@@ -109,6 +88,4 @@ printf 'termshade-snapshot/1\nsize 80x24\nbo\033[2Jgus 1\n' >"$work/bad.snap"
 check bad_golden 1 "bad.snap:3: unknown header line" -- "$bin" render "$work/cube.dat" --expect "$work/bad.snap"
 expect bad_golden_escaped sh -c "! grep -q \$'\\x1b' '$work/err'"
 check golden_is_folder 1 "" -- "$bin" render "$work/cube.dat" --expect "$work/goldens"
-
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
