@@ -102,6 +102,8 @@ def Check(root, path):
                 resolved = path.parent / relative
             if not resolved.exists():
                 broken.append((number, target))
+            elif not resolved.resolve().is_relative_to(root.resolve()):
+                broken.append((number, target))  # outside the repository: gone in a clone
             elif anchor and resolved.is_file() and resolved.suffix.lower() == ".md" and \
                     urllib.parse.unquote(anchor).lower() not in Anchors(resolved.resolve()):
                 broken.append((number, target))
