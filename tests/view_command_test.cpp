@@ -84,16 +84,17 @@ TEST(ViewCommand, EveryOptionOfTheView) {
   shown.sunElevationRadians = 0.1;
   EXPECT_EQ(RenderCommandFor(shown),
             "termshade render '/m/my duck.dae' --size 160x47 --theta=-0.25 --phi 1.25 --rho 4.5 "
-            "--up=-y --cell-aspect 2 --method painter --shade lambert --glyphs sextants --no-cull "
+            "--fit --up=-y --cell-aspect 2 --method painter --shade lambert --glyphs sextants --no-cull "
             "--light=-0.2,0.1 --color truecolor --background dark --format ansi");
   shown.colour = ColourMode::kNone;
   shown.render = RenderOptions{};
   shown.render.ramp = ShadeRamp(".oO#");
   shown.sunAzimuthRadians = shown.sunElevationRadians = 0.0;
   shown.levelOfDetail = true;
+  shown.fitRho = 2.25;  // after f
   EXPECT_EQ(RenderCommandFor(shown),
             "termshade render '/m/my duck.dae' --size 160x47 --theta=-0.25 --phi 1.25 --rho 4.5 "
-            "--up=-y --cell-aspect 2 --method zbuffer --shade contrast --glyphs ramp "
+            "--fit --fit-rho 2.25 --up=-y --cell-aspect 2 --method zbuffer --shade contrast --glyphs ramp "
             "--ramp '.oO#' --lod auto --color none --background dark");
 }
 

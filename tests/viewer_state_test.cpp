@@ -42,10 +42,11 @@ TEST(ViewerState, TerminalAspectIsUsedUnlessOverridden) {
   EXPECT_DOUBLE_EQ(ViewerState(options, 1.8).CellAspect(), 2.2);
 }
 
-TEST(ViewerState, CameraEqualsTheHeadlessFit) {
+TEST(ViewerState, CameraEqualsTheHeadlessFit) {  // render --fit
   const ViewerState state = DemoState();
   const Camera viewer = state.CameraFor(80, 24);
-  const Camera headless = FitCamera(state.CurrentScene(), state.View(), 80, 24, 2.0);
+  const Camera headless =
+      FitCamera(state.CurrentScene(), state.View(), 80, 24, 2.0, Framing::kOrbit);
   EXPECT_EQ(viewer.projection.d, headless.projection.d);
   EXPECT_EQ(viewer.projection.cx, headless.projection.cx);
 }

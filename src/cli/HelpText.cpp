@@ -86,6 +86,7 @@ const std::vector<CommandExamples>& AllExamples() {
         {"termshade render bunny.obj --up z --theta 30deg",
          "a z-up file read as such, angle in degrees"},
         {"termshade render a.obj b.stl --size 60x20", "two models, one frame each, in turn"},
+        {"termshade render duck.dae --fit", "framed as the viewer frames it (larger, orbit-safe)"},
         {"termshade render part.stl --expect part.snap",
          "snapshot test: compare with the golden (write it once with --update)"}}},
       {"info",

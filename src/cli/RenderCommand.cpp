@@ -131,11 +131,15 @@ std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* l
   view.theta = options.theta;
   view.phi = options.phi;
   if (options.rho > 0.0) view.rho = options.rho;
+  const double fitRho =
+      options.fitRho > 0.0 ? options.fitRho : DefaultView(scene.diagonalModelUnits).rho;
+  const Framing framing = options.fit ? Framing::kOrbit : Framing::kSpec;
   const int widthCells = sink.cells.WidthCells(), heightCells = sink.cells.HeightCells();
   for (int frame = 0; frame < options.frames; ++frame) {
     ViewParams frameView = view;
     frameView.theta = view.theta + frame * options.stepRadians;
-    const Camera camera = FitCamera(scene, frameView, widthCells, heightCells, options.cellAspect);
+    const Camera camera = FitCameraAt(scene, frameView, fitRho, widthCells, heightCells,
+                                      options.cellAspect, framing);
     // --lod auto: a simplified copy where its triangles are far below a sample.
     const Scene& drawn = *PickDetail(levels, scene, camera, renderOptions).scene;
     sink.renderer.Render(drawn, camera, renderOptions, sink.depth, sink.cells);

@@ -21,6 +21,8 @@ struct RenderCommandOptions {
   double theta = 0.3;
   double phi = 1.3;
   double rho = 0.0;  ///< 0: the model's default distance
+  bool fit = false;     ///< --fit: the viewer's framing (Framing::kOrbit)
+  double fitRho = 0.0;  ///< --fit-rho: the distance the frame is fitted at; 0: the default
   std::string method = "zbuffer";
   std::string shade = "contrast";
   std::string ramp = ShadeRamp::kDefaultGlyphs;

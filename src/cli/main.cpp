@@ -348,6 +348,15 @@ int Run(int argc, char** argv) {
           "the sun as two angles about the eye's axes, radians or Ndeg: AZIMUTH,ELEVATION "
           "(default 0,0: from the upper left front; the viewer's L mode moves it)")
       ->type_name("AZ,EL");
+  renderCommand->add_flag("--fit", render.fit,
+                          "the viewer's framing: the model as large as stays inside the frame at "
+                          "every orbit angle (default: SPEC's, the bounding sphere at 9/10 of the "
+                          "smaller half-extent)");
+  renderCommand
+      ->add_option("--fit-rho", render.fitRho,
+                   "fit the frame as if the eye were at this distance, model units (the "
+                   "viewer's f; default: the default distance)")
+      ->check(termshade::FinitePositive());
   AddUpOption(*renderCommand, render.upAxis);
   renderCommand
       ->add_option("--input-format", render.inputFormat,

@@ -93,6 +93,7 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
   scene.upAxisOverridden = exact.upAxisOverridden;
   scene.diagonalModelUnits = exact.diagonalModelUnits;
   scene.radiusModelUnits = exact.radiusModelUnits;
+  scene.horizontalRadiusModelUnits = exact.horizontalRadiusModelUnits;
   scene.source.name = exact.source.name;
   scene.source.upAxisFile = exact.source.upAxisFile;
   scene.source.shiftZUp = exact.source.shiftZUp;

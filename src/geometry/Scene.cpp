@@ -123,25 +123,32 @@ void TakeVerticesAsWorld(Scene& scene, std::vector<Vec3> points) {
 
   // Step 1c: world space in place, the inexact file vertices listed
   // (ascending: each part writes its own stretch), the radius per part.
-  std::vector<double> partRadius(parts, 0.0);
+  std::vector<double> partRadius(parts, 0.0), partHorizontal(parts, 0.0);
   RunRangesOnLoadThreads(threads, vertexCount, [&](int part, size_t begin, size_t end) {
     size_t listed = inexactBefore[static_cast<size_t>(part)];
-    double radius = 0.0;
+    double radius = 0.0, horizontal = 0.0;
     for (size_t v = begin; v < end; ++v) {
       const Vec3 pFile = points[v];
       const Vec3 p = turn(pFile);
       const bool finite = IsFinite(p);
       points[v] = p - center;
-      if (finite) radius = std::max(radius, Length(points[v]));
+      if (finite) {
+        radius = std::max(radius, Length(points[v]));
+        horizontal = std::max(horizontal, std::hypot(points[v].x, points[v].y));
+      }
       if (!keepAll && !GivesBackExactly(points[v], center, p)) {
         source.inexactVertices[listed] = static_cast<uint32_t>(v);
         source.inexactVerticesFile[listed++] = pFile;
       }
     }
     partRadius[static_cast<size_t>(part)] = radius;
+    partHorizontal[static_cast<size_t>(part)] = horizontal;
   });
-  for (double radius : partRadius)
-    scene.radiusModelUnits = std::max(scene.radiusModelUnits, radius);
+  for (size_t part = 0; part < parts; ++part) {
+    scene.radiusModelUnits = std::max(scene.radiusModelUnits, partRadius[part]);
+    scene.horizontalRadiusModelUnits =
+        std::max(scene.horizontalRadiusModelUnits, partHorizontal[part]);
+  }
   scene.verticesWorld = std::move(points);
 }
 

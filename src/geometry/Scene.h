@@ -56,6 +56,9 @@ struct Scene {
   SceneSource source;  ///< the rest of the model (closed parts outward), where the arrays lack it
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex
+  /// Of the smallest cylinder about the up (z) axis holding every vertex:
+  /// what orbiting can bring to the left or right of the view.
+  double horizontalRadiusModelUnits = 0.0;
   /// One closed, consistently oriented, connected surface with every edge
   /// convex: back-face culling alone draws it exactly (the `auto` method).
   bool convexClosedSolid = false;

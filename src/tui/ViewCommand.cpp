@@ -47,6 +47,8 @@ std::string RenderCommandFor(const ViewToReproduce& shown) {
   command += Option("--theta", ExactNumber(shown.view.theta));
   command += Option("--phi", ExactNumber(shown.view.phi));
   command += Option("--rho", ExactNumber(shown.view.rho));
+  command += " --fit";
+  if (shown.fitRho > 0.0) command += Option("--fit-rho", ExactNumber(shown.fitRho));
   command += Option("--up", std::string(UpAxisName(shown.upAxis)));
   command += Option("--cell-aspect", ExactNumber(shown.cellAspect));
   command += Option("--method", std::string(MethodName(shown.render.method)));

@@ -17,6 +17,7 @@ struct ViewToReproduce {
   int widthCells = 0;     ///< the frame's area, the status line left out
   int heightCells = 0;
   ViewParams view;
+  double fitRho = 0.0;  ///< the distance the frame was fitted at (f); 0: the default
   double cellAspect = 2.0;
   UpAxis upAxis = UpAxis::kPlusZ;
   RenderOptions render;  ///< method, shade, ramp, glyphs, culling
@@ -28,7 +29,7 @@ struct ViewToReproduce {
 };
 
 /// The `termshade render ...` command that writes the same frame, cell for
-/// cell: the model shell-quoted, every number exact (it reads back as the
+/// cell, in the viewer's framing (--fit, and --fit-rho after f): the model shell-quoted, every number exact (it reads back as the
 /// same double), `--format ansi` when there is colour (else text; and for
 /// ascii, whose ansi dump matches glyphs to two colours).
 std::string RenderCommandFor(const ViewToReproduce& shown);

@@ -554,12 +554,12 @@ class EventLoop {
     shown.sunAzimuthRadians = state_.SunAzimuthRadians();
     shown.sunElevationRadians = state_.SunElevationRadians();
     shown.levelOfDetail = lastDetailLevel_ > 0;
+    // f fits the model at the distance of the moment.
+    if (state_.FitRho() != DefaultView(scene.diagonalModelUnits).rho)
+      shown.fitRho = state_.FitRho();
     const std::string command = RenderCommandFor(shown);
     writer_.Send(ClipboardSequence(command));
-    // f fits the model at the distance of the moment; render always fits at the default.
-    const bool refitted = state_.FitRho() != DefaultView(scene.diagonalModelUnits).rho;
-    state_.SetMessage(
-        command + (refitted ? "  (after f: render fits at the default distance; r resets)" : ""));
+    state_.SetMessage(command);
   }
 
   // A terminal that would scroll on its bottom-right cell gets one cell less.

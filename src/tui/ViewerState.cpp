@@ -283,7 +283,8 @@ void ViewerState::TurntableAdvance(double seconds) {
 }
 
 Camera ViewerState::CameraFor(int widthCells, int heightCells) const {
-  return FitCameraAt(*scene_, view_, fitRho_, widthCells, heightCells, cellAspect_);
+  return FitCameraAt(*scene_, view_, fitRho_, widthCells, heightCells, cellAspect_,
+                     Framing::kOrbit);
 }
 
 std::string ViewerState::ModelLabel() const {

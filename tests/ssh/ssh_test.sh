@@ -131,7 +131,7 @@ if screen | tail -n 1 | grep -q 'theta 2.30 '; then pass; else
   fail "a key was lost: $(screen | tail -n 1)"
 fi
 screen | head -n 47 | sed 's/[[:space:]]*$//' >"$work/screen.txt"
-"$bin" render "$model" --size 160x47 --theta 2.3 --glyphs sextants --color truecolor --format ansi |
+"$bin" render "$model" --fit --size 160x47 --theta 2.3 --glyphs sextants --color truecolor --format ansi |
   sed 's/\x1b\[[0-9;]*m//g; s/[[:space:]]*$//' >"$work/render.txt"
 if cmp -s "$work/screen.txt" "$work/render.txt"; then pass; else
   fail "the screen over ssh differs from termshade render"
@@ -140,7 +140,7 @@ fi
 # Colours too: frames drawn while the view moved use fewer colours on this
 # link (MotionFrames); the full frame must have followed once it rested.
 tm capture-pane -t v -p -e >"$work/screen.ans"
-"$bin" render "$model" --size 160x47 --theta 2.3 --glyphs sextants --color truecolor --format ansi >"$work/render.ans"
+"$bin" render "$model" --fit --size 160x47 --theta 2.3 --glyphs sextants --color truecolor --format ansi >"$work/render.ans"
 if python3 "$src/tests/tmux/ansi_cells.py" "$work/screen.ans" "$work/render.ans" 47 >/dev/null; then pass; else
   fail "the screen's colours over ssh differ from termshade render's"
 fi

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -88,10 +89,13 @@ Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads) {
 }
 
 Scene ShiftedScene(Scene scene, Vec3 shiftWorld) {
-  scene.radiusModelUnits = 0.0;
+  scene.radiusModelUnits = scene.horizontalRadiusModelUnits = 0.0;
   for (Vec3& p : scene.verticesWorld) {
     p = p + shiftWorld;
-    if (IsFinite(p)) scene.radiusModelUnits = std::max(scene.radiusModelUnits, Length(p));
+    if (!IsFinite(p)) continue;
+    scene.radiusModelUnits = std::max(scene.radiusModelUnits, Length(p));
+    scene.horizontalRadiusModelUnits =
+        std::max(scene.horizontalRadiusModelUnits, std::hypot(p.x, p.y));
   }
   // n . p = h for every p of the plane: moved by s, h grows by n . s.
   for (FacePlane& plane : scene.facePlanesWorld) plane.offset += Dot(plane.normal, shiftWorld);

@@ -72,7 +72,7 @@ frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line =
   # The viewer picks its glyph mode for the terminal and names it on the status line.
   note_glyphs
   # (An ansi dump compares by its characters: SGR sequences dropped.)
-  "$bin" render "$@" --glyphs "${last_glyphs:-none-seen}" | sed 's/\x1b\[[0-9;]*m//g; s/[[:space:]]*$//' >"$work/render.txt"
+  "$bin" render "$@" --fit --glyphs "${last_glyphs:-none-seen}" | sed 's/\x1b\[[0-9;]*m//g; s/[[:space:]]*$//' >"$work/render.txt"
   if cmp -s "$work/screen.txt" "$work/render.txt"; then pass; else
     fail "$name: screen differs from 'termshade render $*'"
     diff "$work/screen.txt" "$work/render.txt" | head -20
@@ -438,7 +438,7 @@ if grep -q '48;' "$work/colours.txt"; then fail "a background colour was painted
 if grep -q '38;5;' "$work/colours.txt"; then pass; else fail "no 256-colour faces"; fi
 # The ansi dump carries the same colours as the screen.
 head -n 24 "$work/colours.txt" | colour_codes >"$work/screen_colours.txt"
-"$bin" render "$src/data/sphere_cone.dat" --size 80x24 --format ansi --color 256 | colour_codes >"$work/dump_colours.txt"
+"$bin" render "$src/data/sphere_cone.dat" --fit --size 80x24 --format ansi --color 256 | colour_codes >"$work/dump_colours.txt"
 if [ -s "$work/dump_colours.txt" ] && cmp -s "$work/screen_colours.txt" "$work/dump_colours.txt"; then pass; else
   fail "screen and ansi dump colours differ"
   diff "$work/screen_colours.txt" "$work/dump_colours.txt" | head -5
@@ -529,7 +529,7 @@ done
 # The two-colour modes paint their background: the ansi dump's bg colours (SGR 48).
 bg_codes() { grep -oE '[[;]48;(5;[0-9]+|2;[0-9]+;[0-9]+)' | cut -c2- | sort -u; }
 tm capture-pane -t v -p -e | head -n 24 | bg_codes >"$work/screen_bg.txt"
-"$bin" render "$src/data/sphere_cone.dat" --size 80x24 --glyphs blocks --format ansi --color 256 | bg_codes >"$work/dump_bg.txt"
+"$bin" render "$src/data/sphere_cone.dat" --fit --size 80x24 --glyphs blocks --format ansi --color 256 | bg_codes >"$work/dump_bg.txt"
 if [ -s "$work/dump_bg.txt" ] && cmp -s "$work/screen_bg.txt" "$work/dump_bg.txt"; then pass; else
   fail "blocks: the screen's background colours are not the ansi dump's"
   diff "$work/screen_bg.txt" "$work/dump_bg.txt" | head -5
@@ -648,14 +648,15 @@ wait_for '^\$ ?$' 5 >/dev/null
 # 16. y: the status line shows the `termshade render` command of the view,
 # and OSC 52 puts it in tmux's paste buffer (set-clipboard on). Run, it
 # writes the screen's frame cell for cell, colours included: after orbiting,
-# zooming, another method, shading and cell aspect, the light moved (L), a
-# model path with a space; then again with colour off.
+# zooming, a refit (f) at the closer distance and zooming out again, another
+# method, shading and cell aspect, the light moved (L), a model path with a
+# space; then again with colour off.
 tm set-option -s set-clipboard on
 cp "$src/data/sphere_cone.dat" "$work/two words.dat"
 run "clear; cd $work; LANG=C.UTF-8 LC_ALL=C.UTF-8 COLORTERM=truecolor $bin --glyphs quadrants 'two words.dat'; cd - >/dev/null"
 wait_for '\? help' 5 >/dev/null || fail "viewer did not start for y"
-tm send-keys -t v Right Right Up + m s a L Left Down L
-wait_for 'theta 0\.50 phi 1\.20 rho 4\.' 5 >/dev/null || fail "keys before y were not applied"
+tm send-keys -t v Right Right Up + f - m s a L Left Down L
+wait_for 'theta 0\.50 phi 1\.20 rho 9\.8' 5 >/dev/null || fail "keys before y were not applied"
 settle
 view_command_matches() {  # NAME CAPTURE-OPTION: y, then the buffer's command against the screen
   tm delete-buffer 2>/dev/null
@@ -665,7 +666,7 @@ view_command_matches() {  # NAME CAPTURE-OPTION: y, then the buffer's command ag
   local command
   command=$(tm show-buffer 2>/dev/null)
   case $command in
-    "termshade render '$work/two words.dat' "*) pass ;;
+    "termshade render '$work/two words.dat' "*" --fit --fit-rho 4."*) pass ;;
     *) fail "$1: no render command in tmux's buffer (OSC 52): '$command'" ;;
   esac
   screen | tail -n 1 | grep -q "^termshade render '" && pass || fail "$1: status line: $(screen | tail -n 1)"
