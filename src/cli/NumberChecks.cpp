@@ -41,4 +41,21 @@ CLI::Validator FinitePositive() {
           "POSITIVE"};
 }
 
+std::optional<double> ParseDurationSeconds(std::string_view text) {
+  double scale = 1.0;
+  if (text.ends_with("ms")) {
+    scale = 1e-3;
+    text.remove_suffix(2);
+  } else if (text.ends_with('s')) {
+    text.remove_suffix(1);
+  } else {
+    return std::nullopt;
+  }
+  double value = 0.0;
+  if (text.empty() || !ParseNumber(std::string(text), value)) return std::nullopt;
+  const double seconds = value * scale;
+  if (!(seconds > 0.0 && seconds <= 86400.0)) return std::nullopt;
+  return seconds;
+}
+
 }  // namespace termshade

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/RenderBudget.h"
 #include "geometry/FitCamera.h"
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
@@ -120,26 +121,29 @@ void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& 
   AppendJsonFrame(sink.cells, sink.depth, scene, camera, renderOptions, text, &samples);
 }
 
-// The turntable of one model: options.frames frames, theta advancing by the
-// step. Returns the output's error, if any.
-std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* levels,
-                                       const RenderCommandOptions& options,
-                                       const RenderOptions& renderOptions, FrameFormat format,
-                                       ColourMode colourMode, Background background,
-                                       FrameSink& sink) {
+// Frame `frame` of the turntable: theta advancing by the step, fitted as asked.
+Camera FrameCamera(const Scene& scene, const RenderCommandOptions& options, int frame,
+                   int widthCells, int heightCells) {
   ViewParams view = DefaultView(scene.diagonalModelUnits);
-  view.theta = options.theta;
+  view.theta = options.theta + frame * options.stepRadians;
   view.phi = options.phi;
   if (options.rho > 0.0) view.rho = options.rho;
   const double fitRho =
       options.fitRho > 0.0 ? options.fitRho : DefaultView(scene.diagonalModelUnits).rho;
   const Framing framing = options.fit ? Framing::kOrbit : Framing::kSpec;
+  return FitCameraAt(scene, view, fitRho, widthCells, heightCells, options.cellAspect, framing);
+}
+
+// The turntable of one model: options.frames frames. Returns the output's
+// error, if any.
+std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* levels,
+                                       const RenderCommandOptions& options,
+                                       const RenderOptions& renderOptions, FrameFormat format,
+                                       ColourMode colourMode, Background background,
+                                       FrameSink& sink) {
   const int widthCells = sink.cells.WidthCells(), heightCells = sink.cells.HeightCells();
   for (int frame = 0; frame < options.frames; ++frame) {
-    ViewParams frameView = view;
-    frameView.theta = view.theta + frame * options.stepRadians;
-    const Camera camera = FitCameraAt(scene, frameView, fitRho, widthCells, heightCells,
-                                      options.cellAspect, framing);
+    const Camera camera = FrameCamera(scene, options, frame, widthCells, heightCells);
     // --lod auto: a simplified copy where its triangles are far below a sample.
     const Scene& drawn = *PickDetail(levels, scene, camera, renderOptions).scene;
     sink.renderer.Render(drawn, camera, renderOptions, sink.depth, sink.cells);
@@ -157,6 +161,7 @@ std::optional<std::string> WriteFrames(const Scene& scene, const DetailLevels* l
 }  // namespace
 
 int RunRenderCommand(const RenderCommandOptions& options) {
+  const RenderBudget budget(options.budgetSeconds);  // from here: the command's start
   // Step 1: options that the parser could not check alone.
   const auto method = ParseMethod(options.method);
   if (!method) return UsageError("--method must be zbuffer, painter, cull, wire or auto");
@@ -270,7 +275,17 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       exitCode = 1;
       continue;
     }
-    const Scene scene = PrepareScene(std::move(mesh.Value()), options.upAxis);
+    const Scene exact = PrepareScene(std::move(mesh.Value()), options.upAxis);
+    // --budget: a clustered copy where the exact frames would not fit in what is left.
+    std::optional<DetailLevel> coarse;
+    if (*method != Method::kWire && !budget.ExactFits(exact.triangles.size(), options.frames, *method)) {
+      coarse.emplace(ClusteredLevelFor(
+          exact, FrameCamera(exact, options, 0, widthCells, heightCells), renderOptions));
+      std::cerr << budget.CoarseNote(SanitizeForTerminal(modelPath), exact.triangles.size(),
+                                     coarse->scene.triangles.size(), options.frames, *method)
+                << "\n";
+    }
+    const Scene& scene = coarse ? coarse->scene : exact;
     // A long turntable of a big scene: the hierarchy pays for its build (same
     // frames). Built on this thread, so only where the rays were quicker.
     if (options.frames >= kHierarchyFromFrames && *detail == DetailMode::kOff &&
@@ -279,7 +294,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       scene.hierarchy.Attach(std::make_shared<const RayBvh>(BuildRayBvh(scene)));
     }
     std::optional<DetailLevels> levels;
-    if (*detail == DetailMode::kAuto) levels.emplace(BuildDetailLevels(scene));
+    if (*detail == DetailMode::kAuto && !coarse) levels.emplace(BuildDetailLevels(scene));
     if (const auto problem = openOutput()) return outputFailed(*problem);
     if (const auto problem =
             WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions, *format,

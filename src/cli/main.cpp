@@ -348,6 +348,21 @@ int Run(int argc, char** argv) {
           "the sun as two angles about the eye's axes, radians or Ndeg: AZIMUTH,ELEVATION "
           "(default 0,0: from the upper left front; the viewer's L mode moves it)")
       ->type_name("AZ,EL");
+  renderCommand
+      ->add_option_function<std::string>(
+          "--budget",
+          [&render](const std::string& text) {
+            const auto seconds = termshade::ParseDurationSeconds(text);
+            if (!seconds) {
+              throw CLI::ValidationError(
+                  "--budget", "expected a duration above zero and at most a day: 300ms or 1.5s");
+            }
+            render.budgetSeconds = *seconds;
+          },
+          "time for the whole command, e.g. 300ms or 2s: when a big model's exact frames would "
+          "not fit in what loading left, a clustered copy is drawn (a note says so); loading "
+          "itself is not cut short")
+      ->type_name("DURATION");
   renderCommand->add_flag("--fit", render.fit,
                           "the viewer's framing: the model as large as stays inside the frame at "
                           "every orbit angle (default: SPEC's, the bounding sphere at 9/10 of the "

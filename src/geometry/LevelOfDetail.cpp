@@ -231,6 +231,44 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
   return result;
 }
 
+DetailLevel BuildClusteredLevel(const Scene& exact, double cellModelUnits) {
+  const double radius = exact.radiusModelUnits > 0.0 ? exact.radiusModelUnits : 1.0;
+  const double wanted = cellModelUnits > 0.0 ? std::ceil(2.0 * radius / cellModelUnits) : 1.0;
+  const auto across = static_cast<size_t>(std::clamp(wanted, 1.0, double{kMostClusterCellsAcross}));
+  const double cellSize = 2.0 * radius / static_cast<double>(across);
+  const auto cellOf = [&](double coordinate) {
+    const double cell = std::floor((coordinate + radius) / cellSize);
+    return static_cast<size_t>(std::clamp(cell, 0.0, static_cast<double>(across - 1)));
+  };
+  // Step 1: each vertex to its cell's first vertex.
+  const size_t vertexCount = exact.verticesWorld.size();
+  std::vector<uint32_t> firstInCell(across * across * across, kNone);
+  std::vector<uint32_t> clusterOf(vertexCount, kNone);
+  for (size_t v = 0; v < vertexCount; ++v) {
+    const Vec3 p = exact.verticesWorld[v];
+    if (!IsFinite(p)) continue;
+    uint32_t& first = firstInCell[(cellOf(p.x) * across + cellOf(p.y)) * across + cellOf(p.z)];
+    if (first == kNone) first = static_cast<uint32_t>(v);
+    clusterOf[v] = first;
+  }
+  // Step 2: the triangles whose corners stay apart; each cluster's first face.
+  Source source;
+  source.vertexFace.assign(vertexCount, kNone);
+  std::vector<uint32_t> indices;
+  for (size_t t = 0; t < exact.triangles.size(); ++t) {
+    const auto& corners = exact.triangles[t].vertices;
+    const uint32_t a = clusterOf[corners[0]], b = clusterOf[corners[1]], c = clusterOf[corners[2]];
+    if (a == kNone || b == kNone || c == kNone || a == b || b == c || a == c) continue;
+    indices.insert(indices.end(), {a, b, c});
+    for (const uint32_t v : {a, b, c}) {
+      if (source.vertexFace[v] == kNone) source.vertexFace[v] = exact.TriangleFace(t);
+    }
+  }
+  std::vector<uint32_t> newIndex(vertexCount, kNone);
+  // A vertex moves at most a cell's diagonal.
+  return MakeLevel(exact, source, indices, std::sqrt(3.0) * cellSize, newIndex);
+}
+
 double TrianglesNeeded(const Scene& exact, const Camera& camera, const DetailTarget& target) {
   const double radius = exact.radiusModelUnits, rho = camera.view.rho;
   if (!(rho > 1.5 * radius) || !(radius > 0.0)) return std::numeric_limits<double>::infinity();

@@ -50,6 +50,14 @@ struct DetailBuildOptions {
 /// Builds the levels of `exact` (none for a small scene, or when cancelled).
 DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& options = {});
 
+/// A coarse copy in one pass (vertex clustering): the vertices snapped to
+/// the first vertex of their cell in a grid of cellModelUnits over the
+/// bounding sphere (at most kMostClusterCellsAcross cells across), the
+/// triangles left with three distinct corners kept. Much cheaper to build
+/// than BuildDetailLevels' edge collapse, and coarser: `render --budget`'s.
+DetailLevel BuildClusteredLevel(const Scene& exact, double cellModelUnits);
+constexpr int kMostClusterCellsAcross = 128;
+
 /// How finely a frame needs the model: sample grid per cell and how large the
 /// mean projected triangle may be.
 struct DetailTarget {

@@ -22,4 +22,9 @@ DetailPick PickDetail(const DetailLevels* levels, const Scene& exact, const Came
                       const RenderOptions& options,
                       double samplesPerTriangle = DetailTarget{}.samplesPerTriangle);
 
+/// The clustered copy (BuildClusteredLevel) for this frame: cells of one
+/// sample at the model's nearest point, so it moves by about a sample.
+DetailLevel ClusteredLevelFor(const Scene& exact, const Camera& camera,
+                              const RenderOptions& options);
+
 }  // namespace termshade
