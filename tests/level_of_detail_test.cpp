@@ -231,3 +231,34 @@ TEST(LevelOfDetail, CoincidentTrianglesAreSkippedWithAReason) {
 
 }  // namespace
 }  // namespace termshade
+
+namespace termshade {
+namespace {
+
+// render --budget's copy: the exact scene's vertices (a sphere's stay on it),
+// fewer triangles the larger the cell, at most kMostClusterCellsAcross cells
+// across, and every triangle facing out as its source face does.
+TEST(ClusteredLevel, ExactVerticesFewerTrianglesFacingOut) {
+  const Scene& exact = Sphere200k();
+  const double radius = exact.radiusModelUnits;
+  size_t previous = exact.triangles.size();
+  for (const double cells : {100.0, 40.0, 10.0}) {
+    const DetailLevel level = BuildClusteredLevel(exact, 2.0 * radius / cells);
+    EXPECT_LT(level.scene.triangles.size(), previous) << cells;
+    EXPECT_GT(level.scene.triangles.size(), 0U);
+    previous = level.scene.triangles.size();
+    EXPECT_DOUBLE_EQ(level.errorModelUnits, std::sqrt(3.0) * 2.0 * radius / cells);
+    for (const Vec3& p : level.scene.verticesWorld) ASSERT_NEAR(Length(p), radius, 1e-4);
+    ASSERT_EQ(level.sourceFaces.size(), level.scene.FaceCount());
+    for (size_t f = 0; f < level.scene.FaceCount(); ++f) {
+      // n . p > 0 on a sphere about the origin: outward.
+      ASSERT_GT(level.scene.facePlanesWorld[f].offset, 0.0) << f;
+    }
+  }
+  // A cell far below the cap: as if the cap's.
+  EXPECT_EQ(BuildClusteredLevel(exact, 1e-9).scene.triangles.size(),
+            BuildClusteredLevel(exact, 2.0 * radius / kMostClusterCellsAcross).scene.triangles.size());
+}
+
+}  // namespace
+}  // namespace termshade
