@@ -6,7 +6,7 @@ namespace termshade {
 namespace {
 
 // Seconds a triangle of an exact frame, about twice what 90 frames of the
-// 2M-triangle sphere took at 80x24 on 2 cores (docs/exports.md#a-time-budget):
+// 2M-triangle sphere took at 80x24 on 2 cores (docs/exports.md#a-time-budget---budget):
 // 3-11 ms a frame by zbuffer (whole clusters culled), 100-130 ms by painter (sorted).
 constexpr double kFrameSecondsPerTriangle = 1.0e-8;
 constexpr double kPainterSecondsPerTriangle = 1.2e-7;

@@ -23,7 +23,7 @@ class RenderBudget {
   /// Whether `frames` exact frames of a scene of `triangles` still fit.
   bool ExactFits(size_t triangles, long frames, Method method) const;
   /// A frame's predicted cost: what the frames of a 2M-triangle sphere took
-  /// on the development machine (docs/exports.md#a-time-budget), per triangle.
+  /// on the development machine (docs/exports.md#a-time-budget---budget), per triangle.
   static double PredictedFrameSeconds(size_t triangles, Method method);
   /// The stderr note when a model's frames were drawn coarse.
   std::string CoarseNote(const std::string& modelName, size_t exactTriangles,

@@ -365,8 +365,8 @@ int Run(int argc, char** argv) {
       ->type_name("DURATION");
   renderCommand->add_flag("--fit", render.fit,
                           "the viewer's framing: the model as large as stays inside the frame at "
-                          "every orbit angle (default: SPEC's, the bounding sphere at 9/10 of the "
-                          "smaller half-extent)");
+                          "every orbit angle (default: the bounding sphere at 9/10 of the smaller "
+                          "half-extent, as dumps and goldens are made)");
   renderCommand
       ->add_option("--fit-rho", render.fitRho,
                    "fit the frame as if the eye were at this distance, model units (the "
