@@ -256,8 +256,9 @@ TEST(ClusteredLevel, ExactVerticesFewerTrianglesFacingOut) {
     }
   }
   // A cell far below the cap: as if the cap's.
-  EXPECT_EQ(BuildClusteredLevel(exact, 1e-9).scene.triangles.size(),
-            BuildClusteredLevel(exact, 2.0 * radius / kMostClusterCellsAcross).scene.triangles.size());
+  EXPECT_EQ(
+      BuildClusteredLevel(exact, 1e-9).scene.triangles.size(),
+      BuildClusteredLevel(exact, 2.0 * radius / kMostClusterCellsAcross).scene.triangles.size());
 }
 
 }  // namespace

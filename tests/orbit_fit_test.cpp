@@ -21,8 +21,8 @@ struct Window {
   double cellAspect;
 };
 
-constexpr Window kWindows[] = {{80, 24, 2.0}, {40, 30, 2.0}, {160, 48, 1.8}, {30, 60, 2.0},
-                               {12, 10, 1.75}};
+constexpr Window kWindows[] = {
+    {80, 24, 2.0}, {40, 30, 2.0}, {160, 48, 1.8}, {30, 60, 2.0}, {12, 10, 1.75}};
 
 // The farthest any vertex projects beyond the margin, in cells (<= 0: inside).
 double WorstOverhangCells(const Scene& scene, const Camera& camera, const Window& window) {
@@ -46,9 +46,9 @@ TEST(OrbitFit, EveryVertexInsideAtEveryOrbitAngle) {
           for (int j = 0; j <= 12; ++j) {
             const ViewParams view{fitRho, 2.0 * std::numbers::pi * i / 24,
                                   std::numbers::pi * j / 12};
-            const Camera camera = FitCameraAt(scene, view, fitRho, window.widthCells,
-                                              window.heightCells, window.cellAspect,
-                                              Framing::kOrbit);
+            const Camera camera =
+                FitCameraAt(scene, view, fitRho, window.widthCells, window.heightCells,
+                            window.cellAspect, Framing::kOrbit);
             ASSERT_LE(WorstOverhangCells(scene, camera, window), 1e-9)
                 << name << " " << window.widthCells << "x" << window.heightCells << " theta "
                 << view.theta << " phi " << view.phi << " fit at " << fitRho;

@@ -82,10 +82,11 @@ TEST(ViewCommand, EveryOptionOfTheView) {
   shown.colour = ColourMode::kTrueColour;
   shown.sunAzimuthRadians = -0.2;
   shown.sunElevationRadians = 0.1;
-  EXPECT_EQ(RenderCommandFor(shown),
-            "termshade render '/m/my duck.dae' --size 160x47 --theta=-0.25 --phi 1.25 --rho 4.5 "
-            "--fit --up=-y --cell-aspect 2 --method painter --shade lambert --glyphs sextants --no-cull "
-            "--light=-0.2,0.1 --color truecolor --background dark --format ansi");
+  EXPECT_EQ(
+      RenderCommandFor(shown),
+      "termshade render '/m/my duck.dae' --size 160x47 --theta=-0.25 --phi 1.25 --rho 4.5 "
+      "--fit --up=-y --cell-aspect 2 --method painter --shade lambert --glyphs sextants --no-cull "
+      "--light=-0.2,0.1 --color truecolor --background dark --format ansi");
   shown.colour = ColourMode::kNone;
   shown.render = RenderOptions{};
   shown.render.ramp = ShadeRamp(".oO#");
@@ -94,8 +95,8 @@ TEST(ViewCommand, EveryOptionOfTheView) {
   shown.fitRho = 2.25;  // after f
   EXPECT_EQ(RenderCommandFor(shown),
             "termshade render '/m/my duck.dae' --size 160x47 --theta=-0.25 --phi 1.25 --rho 4.5 "
-            "--fit --fit-rho 2.25 --up=-y --cell-aspect 2 --method zbuffer --shade contrast --glyphs ramp "
-            "--ramp '.oO#' --lod auto --color none --background dark");
+            "--fit --fit-rho 2.25 --up=-y --cell-aspect 2 --method zbuffer --shade contrast "
+            "--glyphs ramp --ramp '.oO#' --lod auto --color none --background dark");
 }
 
 }  // namespace

@@ -26,8 +26,8 @@ class RenderBudget {
   /// on the development machine (docs/exports.md#a-time-budget---budget), per triangle.
   static double PredictedFrameSeconds(size_t triangles, Method method);
   /// The stderr note when a model's frames were drawn coarse.
-  std::string CoarseNote(const std::string& modelName, size_t exactTriangles,
-                         size_t drawnTriangles, long frames, Method method) const;
+  std::string CoarseNote(const std::string& modelName, size_t exactTriangles, size_t drawnTriangles,
+                         long frames, Method method) const;
 
  private:
   double budgetSeconds_;

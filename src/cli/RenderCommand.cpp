@@ -278,7 +278,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
     const Scene exact = PrepareScene(std::move(mesh.Value()), options.upAxis);
     // --budget: a clustered copy where the exact frames would not fit in what is left.
     std::optional<DetailLevel> coarse;
-    if (*method != Method::kWire && !budget.ExactFits(exact.triangles.size(), options.frames, *method)) {
+    if (*method != Method::kWire &&
+        !budget.ExactFits(exact.triangles.size(), options.frames, *method)) {
       coarse.emplace(ClusteredLevelFor(
           exact, FrameCamera(exact, options, 0, widthCells, heightCells), renderOptions));
       std::cerr << budget.CoarseNote(SanitizeForTerminal(modelPath), exact.triangles.size(),

@@ -20,9 +20,9 @@ struct RenderCommandOptions {
   double cellAspect = 2.0;
   double theta = 0.3;
   double phi = 1.3;
-  double rho = 0.0;  ///< 0: the model's default distance
-  bool fit = false;     ///< --fit: the viewer's framing (Framing::kOrbit)
-  double fitRho = 0.0;  ///< --fit-rho: the distance the frame is fitted at; 0: the default
+  double rho = 0.0;            ///< 0: the model's default distance
+  bool fit = false;            ///< --fit: the viewer's framing (Framing::kOrbit)
+  double fitRho = 0.0;         ///< --fit-rho: the distance the frame is fitted at; 0: the default
   double budgetSeconds = 0.0;  ///< --budget: the whole command's time (RenderBudget); 0: none
   std::string method = "zbuffer";
   std::string shade = "contrast";

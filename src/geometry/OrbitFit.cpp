@@ -43,8 +43,9 @@ Projection FitOrbitProjection(double radiusModelUnits, double horizontalRadiusMo
   const double tanHorizontal = HorizontalTangent(radius, horizontal, rho);
   // Screen units are cell widths; a row is cellAspect of them.
   const double dForHeight = HalfExtentLessMarginCells(heightCells) * cellAspect / tanVertical;
-  const double dForWidth = tanHorizontal > 0.0 ? HalfExtentLessMarginCells(widthCells) / tanHorizontal
-                                               : std::numeric_limits<double>::infinity();
+  const double dForWidth = tanHorizontal > 0.0
+                               ? HalfExtentLessMarginCells(widthCells) / tanHorizontal
+                               : std::numeric_limits<double>::infinity();
   proj.d = std::min(dForHeight, dForWidth);
   return proj;
 }

@@ -29,9 +29,9 @@ struct ViewToReproduce {
 };
 
 /// The `termshade render ...` command that writes the same frame, cell for
-/// cell, in the viewer's framing (--fit, and --fit-rho after f): the model shell-quoted, every number exact (it reads back as the
-/// same double), `--format ansi` when there is colour (else text; and for
-/// ascii, whose ansi dump matches glyphs to two colours).
+/// cell, in the viewer's framing (--fit, and --fit-rho after f): the model shell-quoted, every
+/// number exact (it reads back as the same double), `--format ansi` when there is colour (else
+/// text; and for ascii, whose ansi dump matches glyphs to two colours).
 std::string RenderCommandFor(const ViewToReproduce& shown);
 
 /// A double as the shortest text that reads back (by strtod, and by
