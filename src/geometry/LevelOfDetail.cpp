@@ -230,6 +230,17 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
   return result;
 }
 
+size_t EstimateDetailBuildBytes(const Scene& exact, const DetailBuildOptions& options) {
+  if (exact.triangles.size() < options.minSourceTriangles) return 0;
+  // Spheres (half as many vertices as triangles) allocate 151 bytes a
+  // triangle at their peak (termshade_alloc_tests) and hold 116-118 resident
+  // (250k-2M triangles): 112 a triangle (indices, the first level) and 128 a
+  // vertex (meshoptimizer's tables) leave room for its power-of-two tables.
+  constexpr double kBytesPerTriangle = 112, kBytesPerVertex = 128;
+  return static_cast<size_t>(kBytesPerTriangle * static_cast<double>(exact.triangles.size()) +
+                             kBytesPerVertex * static_cast<double>(exact.verticesWorld.size()));
+}
+
 double TrianglesNeeded(const Scene& exact, const Camera& camera, const DetailTarget& target) {
   const double radius = exact.radiusModelUnits, rho = camera.view.rho;
   if (!(rho > 1.5 * radius) || !(radius > 0.0)) return std::numeric_limits<double>::infinity();
