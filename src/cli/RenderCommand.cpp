@@ -16,6 +16,7 @@
 #include "geometry/FitCamera.h"
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
+#include "io/load/ExtrasBudget.h"
 #include "io/load/ModelExtensions.h"
 #include "io/load/ModelLoader.h"
 #include "io/write/AsciicastRecording.h"
@@ -287,15 +288,27 @@ int RunRenderCommand(const RenderCommandOptions& options) {
                 << "\n";
     }
     const Scene& scene = coarse ? coarse->scene : exact;
+    const size_t budgetBytes = loadOptions.memoryBudgetBytes;
     // A long turntable of a big scene: the hierarchy pays for its build (same
-    // frames). Built on this thread, so only where the rays were quicker.
+    // frames). Built on this thread, so only where the rays were quicker, and
+    // only within the memory budget.
     if (options.frames >= kHierarchyFromFrames && *detail == DetailMode::kOff &&
         RayCastStage::WouldCast(scene, widthCells, heightCells, renderOptions,
-                                RayCastStage::kFasterFromTrianglesPerSample)) {
+                                RayCastStage::kFasterFromTrianglesPerSample) &&
+        !ExtraOverBudget("the ray hierarchy", EstimateRayBvhBytes(scene), scene, 0, budgetBytes)) {
       scene.hierarchy.Attach(std::make_shared<const RayBvh>(BuildRayBvh(scene)));
     }
     std::optional<DetailLevels> levels;
-    if (*detail == DetailMode::kAuto && !coarse) levels.emplace(BuildDetailLevels(scene));
+    if (*detail == DetailMode::kAuto && !coarse) {
+      // Levels beyond the budget are left out: the exact frames, said once.
+      if (const auto reason = ExtraOverBudget("level of detail", EstimateDetailBuildBytes(scene),
+                                              scene, 0, budgetBytes)) {
+        std::cerr << "termshade render: note: " << SanitizeForTerminal(modelPath) << ": "
+                  << *reason << "\n";
+      } else {
+        levels.emplace(BuildDetailLevels(scene));
+      }
+    }
     if (const auto problem = openOutput()) return outputFailed(*problem);
     if (const auto problem =
             WriteFrames(scene, levels ? &*levels : nullptr, options, renderOptions, *format,

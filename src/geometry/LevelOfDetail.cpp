@@ -3,10 +3,12 @@
 #include <meshoptimizer.h>
 
 #include "geometry/DuplicateTriangles.h"
+#include "process/ChildWork.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <span>
@@ -154,6 +156,56 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
   return level;
 }
 
+// Edge collapses of inputs this big run where a cancel can stop them at once
+// (a child process): one meshopt_simplify call on them takes seconds.
+constexpr size_t kChildFromTriangles = 500000;
+
+// One level's edge collapse: the indices of `current` reduced towards
+// targetTriangles within relativeError (meshopt_simplify); the reached error
+// in stepError. Returns the index count, or nullopt when cancelled.
+std::optional<size_t> Collapse(const Source& source, const std::vector<uint32_t>& current,
+                               size_t targetTriangles, float relativeError,
+                               std::vector<uint32_t>& simplified, float& stepError,
+                               const std::atomic<bool>* cancel) {
+  const size_t vertexCount = source.positions.size() / 3;
+  auto collapse = [&](uint32_t* destination, float* error) {
+    // (meshopt_simplifySloppy is 3x faster here but twice the error, and stalls near 20k.)
+    return meshopt_simplify(destination, current.data(), current.size(), source.positions.data(),
+                            vertexCount, sizeof(float) * 3, targetTriangles * 3, relativeError, 0,
+                            error);
+  };
+  if (cancel == nullptr || current.size() / 3 < kChildFromTriangles) {
+    return collapse(simplified.data(), &stepError);
+  }
+  // The shared answer: the index count, the error, then the indices.
+  struct Answer {
+    size_t indexCount;
+    float error;
+  };
+  constexpr size_t kIndicesAt = 16;
+  static_assert(sizeof(Answer) <= kIndicesAt);
+  size_t indexCount = 0;
+  const bool answered = RunInChild(
+      kIndicesAt + current.size() * sizeof(uint32_t),
+      [&](std::byte* shared) {
+        Answer answer{};
+        answer.indexCount =
+            collapse(reinterpret_cast<uint32_t*>(shared + kIndicesAt), &answer.error);
+        std::memcpy(shared, &answer, sizeof answer);
+      },
+      [&](const std::byte* shared) {
+        Answer answer{};
+        std::memcpy(&answer, shared, sizeof answer);
+        indexCount = std::min(answer.indexCount, current.size());
+        stepError = answer.error;
+        std::memcpy(simplified.data(), shared + kIndicesAt, indexCount * sizeof(uint32_t));
+      },
+      *cancel);
+  if (answered) return indexCount;
+  if (cancel->load()) return std::nullopt;
+  return collapse(simplified.data(), &stepError);  // no child (or it died): here, to its end
+}
+
 // How many distinct vertices the (position-joined) indices use.
 size_t JoinedVertexCount(const std::vector<uint32_t>& indices, size_t vertexCount) {
   std::vector<bool> used(vertexCount, false);
@@ -182,8 +234,8 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
   DetailLevels result;
   result.exactTriangles = exact.triangles.size();
   if (exact.triangles.size() < options.minSourceTriangles) return result;
-  // Polled between steps: one meshopt_simplify call (the first level's is
-  // most of the build) runs to its end.
+  // Polled between steps; a big edge collapse (the first level's is most of
+  // the build) runs in a child process that a cancel stops at once.
   auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(); };
   Source source = MakeSource(exact);
   if (cancelled()) return result;
@@ -211,13 +263,13 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
     const size_t triangles = current.size() / 3;
     const auto target = static_cast<size_t>(static_cast<double>(triangles) / options.reduction);
     if (target < options.minTriangles) break;
-    // Step 1: edge collapse within what error is left.
+    // Step 1: edge collapse within what error is left (stopped by a cancel).
     float stepError = 0.0F;
     const auto budget = static_cast<float>(options.maxRelativeError - relativeError);
-    // (meshopt_simplifySloppy is 3x faster here but twice the error, and stalls near 20k.)
-    size_t indexCount =
-        meshopt_simplify(simplified.data(), current.data(), current.size(), source.positions.data(),
-                         vertexCount, sizeof(float) * 3, target * 3, budget, 0, &stepError);
+    const std::optional<size_t> collapsed =
+        Collapse(source, current, target, budget, simplified, stepError, options.cancel);
+    if (!collapsed) break;
+    const size_t indexCount = *collapsed;
     // Step 2: stop where the error budget (or the topology) stops the collapse.
     if (indexCount == 0 || indexCount > current.size() * 3 / 4 || cancelled()) break;
     relativeError += stepError;
@@ -267,6 +319,17 @@ DetailLevel BuildClusteredLevel(const Scene& exact, double cellModelUnits) {
   std::vector<uint32_t> newIndex(vertexCount, kNone);
   // A vertex moves at most a cell's diagonal.
   return MakeLevel(exact, source, indices, std::sqrt(3.0) * cellSize, newIndex);
+}
+
+size_t EstimateDetailBuildBytes(const Scene& exact, const DetailBuildOptions& options) {
+  if (exact.triangles.size() < options.minSourceTriangles) return 0;
+  // Spheres (half as many vertices as triangles) allocate 151 bytes a
+  // triangle at their peak (termshade_alloc_tests) and hold 116-118 resident
+  // (250k-2M triangles): 112 a triangle (indices, the first level) and 128 a
+  // vertex (meshoptimizer's tables) leave room for its power-of-two tables.
+  constexpr double kBytesPerTriangle = 112, kBytesPerVertex = 128;
+  return static_cast<size_t>(kBytesPerTriangle * static_cast<double>(exact.triangles.size()) +
+                             kBytesPerVertex * static_cast<double>(exact.verticesWorld.size()));
 }
 
 double TrianglesNeeded(const Scene& exact, const Camera& camera, const DetailTarget& target) {

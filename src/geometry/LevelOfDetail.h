@@ -58,6 +58,12 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
 DetailLevel BuildClusteredLevel(const Scene& exact, double cellModelUnits);
 constexpr int kMostClusterCellsAcross = 128;
 
+/// Peak bytes BuildDetailLevels takes beside the exact scene: meshoptimizer's
+/// work arrays (per vertex of the scene, used or not) and the levels it keeps;
+/// 0 for a scene too small for levels. Measured on generated spheres
+/// (docs/load-and-memory.md), rounded up.
+size_t EstimateDetailBuildBytes(const Scene& exact, const DetailBuildOptions& options = {});
+
 /// How finely a frame needs the model: sample grid per cell and how large the
 /// mean projected triangle may be.
 struct DetailTarget {

@@ -446,6 +446,12 @@ bool RayBvh::BuiltFor(const Scene& scene) const {
          vertexCount == scene.verticesWorld.size();
 }
 
+size_t EstimateRayBvhBytes(const Scene& scene) {
+  constexpr size_t kBytesPerTriangle = 72;
+  return scene.triangles.size() < RayBvh::kMaxTriangles ? kBytesPerTriangle * scene.triangles.size()
+                                                       : 0;
+}
+
 RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel, int threads) {
   RayBvh bvh;
   const size_t count = scene.triangles.size();

@@ -100,4 +100,9 @@ struct RayBvh {
 /// subtrees on two threads (the same hierarchy, byte for byte).
 RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel = nullptr, int threads = 0);
 
+/// Peak bytes BuildRayBvh takes for the scene, the hierarchy it keeps
+/// included: 32 a triangle allocated, 66 resident (huge pages, two threads)
+/// measured on spheres (docs/load-and-memory.md), rounded up.
+size_t EstimateRayBvhBytes(const Scene& scene);
+
 }  // namespace termshade

@@ -15,7 +15,9 @@
 
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
+#include "io/load/ExtrasBudget.h"
 #include "io/read/LoadError.h"
+#include "io/read/LoadOptions.h"
 #include "process/HeapPolicy.h"
 #include "raster/DetailPick.h"
 #include "raster/RayCastStage.h"
@@ -282,9 +284,23 @@ class EventLoop {
     }
     if (!detailJob_ && !hierarchyJob_ && MayStartBuild() && framesDrawn_ > 0 &&
         state_.WantsLevels() && !WantsHierarchy()) {
-      detailJob_ = std::make_unique<DetailJob>(state_.SharedScene(), BuildLevels);
+      const std::shared_ptr<const Scene>& scene = state_.SharedScene();
+      // Levels beyond the memory budget are not built: the exact frames, said once.
+      const size_t heldBytes = scene->hierarchy.Get(*scene) ? EstimateRayBvhBytes(*scene) : 0;
+      if (auto reason = ExtraOverBudget("level of detail", EstimateDetailBuildBytes(*scene), *scene,
+                                        heldBytes, BudgetBytes())) {
+        auto none = std::make_shared<DetailLevels>();
+        none->skippedBecause = *reason;
+        state_.SetLevels(scene, std::move(none));
+        state_.SetMessage(std::move(*reason));
+        dirty_ = true;
+        return;
+      }
+      detailJob_ = std::make_unique<DetailJob>(scene, BuildLevels);
     }
   }
+
+  size_t BudgetBytes() const { return LoadOptions(state_.Limits()).memoryBudgetBytes; }
 
   // Whether the scene's hierarchy is still to be built: frames of this
   // size would cast rays through one, and none was tried for the scene.
@@ -315,7 +331,11 @@ class EventLoop {
     }
     if (!hierarchyJob_ && !detailJob_ && MayStartBuild() && framesDrawn_ > 0 && WantsHierarchy()) {
       hierarchyTriedFor_ = scene;
-      hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
+      // Beyond the memory budget it is not built: the same frames, cast or drawn without it.
+      if (!ExtraOverBudget("the ray hierarchy", EstimateRayBvhBytes(*scene), *scene, 0,
+                           BudgetBytes())) {
+        hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
+      }
     }
   }
 

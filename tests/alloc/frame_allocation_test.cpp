@@ -1,5 +1,6 @@
-// The frame loop allocates nothing once its buffers have grown: every
-// operator new in this test binary is counted (its own executable, so the
+// The frame loop allocates nothing once its buffers have grown, and the
+// optional structures stay within their memory estimates: every operator new
+// in this test binary is counted, with its bytes (its own executable, so the
 // replacement touches no other test).
 #include <gtest/gtest.h>
 
@@ -9,16 +10,35 @@
 #include <vector>
 
 #include "geometry/FitCamera.h"
+#include "geometry/LevelOfDetail.h"
+#include "geometry/RayBvh.h"
 #include "io/scenes/SceneGenerators.h"
 #include "raster/Renderer.h"
 
 namespace {
-std::atomic<long> gAllocations{0};  // NOLINT: the counter a replaced operator new needs
+// The counters a replaced operator new needs.
+std::atomic<long> gAllocations{0};  // NOLINT
+std::atomic<long> gLiveBytes{0};    // NOLINT
+std::atomic<long> gPeakBytes{0};    // NOLINT
+
+// Each block carries its size in front (16 bytes keep malloc's alignment).
+constexpr std::size_t kHeaderBytes = 16;
+
+void CountLive(long bytes) {
+  const long live = gLiveBytes.fetch_add(bytes, std::memory_order_relaxed) + bytes;
+  long peak = gPeakBytes.load(std::memory_order_relaxed);
+  while (live > peak && !gPeakBytes.compare_exchange_weak(peak, live)) {
+  }
 }
+}  // namespace
 
 void* operator new(std::size_t size) {
   gAllocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  if (auto* block = static_cast<std::size_t*>(std::malloc(size + kHeaderBytes))) {
+    *block = size;
+    CountLive(static_cast<long>(size));
+    return reinterpret_cast<char*>(block) + kHeaderBytes;
+  }
   throw std::bad_alloc();
 }
 // The replacement new above takes memory from malloc, so free is its match;
@@ -26,10 +46,13 @@ void* operator new(std::size_t size) {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void operator delete(void* p) noexcept {
-  std::free(p);
+  if (p == nullptr) return;
+  auto* block = reinterpret_cast<std::size_t*>(static_cast<char*>(p) - kHeaderBytes);
+  CountLive(-static_cast<long>(*block));
+  std::free(block);
 }
 void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
+  operator delete(p);
 }
 #pragma GCC diagnostic pop
 
@@ -69,6 +92,39 @@ TEST(FrameLoop, AllocatesNothingAfterTheFirstFrames) {
           << MethodName(method) << " with glyphs " << GlyphModeName(glyphs);
     }
   }
+}
+
+// The most bytes alive at once while `build` runs, above those alive before it.
+template <typename Build>
+long PeakBytesOf(Build&& build) {
+  const long before = gLiveBytes.load();
+  gPeakBytes.store(before);
+  build();
+  return gPeakBytes.load() - before;
+}
+
+// The budget checks (io/load/ExtrasBudget.h) trust these estimates: each
+// must cover what its build allocates, and not by more than three times over
+// (they also cover resident memory, which huge pages and two build threads
+// raise above the allocations: docs/load-and-memory.md).
+TEST(ExtrasMemory, LevelsOfDetailStayWithinTheirEstimate) {
+  const Scene scene = PrepareScene(GenerateTriangleSphere(400000));
+  DetailLevels levels;
+  const long peak = PeakBytesOf([&] { levels = BuildDetailLevels(scene); });
+  ASSERT_FALSE(levels.levels.empty());
+  const auto estimate = static_cast<long>(EstimateDetailBuildBytes(scene));
+  EXPECT_LE(peak, estimate);
+  EXPECT_GE(3 * peak, estimate);
+}
+
+TEST(ExtrasMemory, RayHierarchyStaysWithinItsEstimate) {
+  const Scene scene = PrepareScene(GenerateTriangleSphere(400000));
+  RayBvh bvh;
+  const long peak = PeakBytesOf([&] { bvh = BuildRayBvh(scene, nullptr, 1); });
+  ASSERT_FALSE(bvh.nodes.empty());
+  const auto estimate = static_cast<long>(EstimateRayBvhBytes(scene));
+  EXPECT_LE(peak, estimate);
+  EXPECT_GE(3 * peak, estimate);
 }
 
 }  // namespace

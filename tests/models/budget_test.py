@@ -89,6 +89,14 @@ def ply_255_corners(path):
                 * count)
 
 
+def sphere_2m_ply(path):
+    """termshade's own 2M-triangle test sphere (38 MB): levels of detail would
+    take about 230 MiB beside it, more than the budget leaves."""
+    subprocess.run([BINARY, "generate", "sphere", "--triangles", "2000000", "-o", path], check=True)
+
+
+BINARY = None  # termshade, for the generators that use it
+
 # name, generator, render arguments after the model, budget, standard input (bytes) or None
 CASES = [
     ("expanding_face.obj", expanding_face_obj, ["--size", "40x12"], "100M"),
@@ -101,6 +109,7 @@ CASES = [
      ["--size", "1000x500", "--lod", "auto"], "200M"),
     ("repeated_1000gon.obj", repeated_ngon_obj, ["--size", "400x200", "--lod", "auto"], "300M"),
     ("ply_255_corners.ply", ply_255_corners, ["--size", "400x200"], "300M"),
+    ("sphere_2m_lod.ply", sphere_2m_ply, ["--size", "160x48", "--lod", "auto"], "250M"),
 ]
 STDIN_BYTES = 200 << 20  # `yes 'v 1 2 3'`, cut at 200 MB: more than the budget lets load
 
@@ -158,6 +167,8 @@ def main():
     parser.add_argument("--case", help=argparse.SUPPRESS)  # run one case here (a fresh child)
     parser.add_argument("--dir", help=argparse.SUPPRESS)
     args = parser.parse_args()
+    global BINARY
+    BINARY = args.binary
     if args.case:  # the child: one case, its peak alone in RUSAGE_CHILDREN
         if args.case == "stdin":
             arguments, budget, stdin = ["--input-format", "obj", "--size", "40x12"], "100M", True

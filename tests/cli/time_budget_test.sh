@@ -3,7 +3,7 @@
 # gives a picture (a clustered copy, said in one note) and exit 0; a
 # generous budget, a small model and the wire frame give the exact bytes;
 # bad durations are usage errors (exit 2).
-# Usage: budget_test.sh path/to/termshade source-dir
+# Usage: time_budget_test.sh path/to/termshade source-dir
 set -u
 bin=$1
 src=$2
