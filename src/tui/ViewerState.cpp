@@ -183,7 +183,8 @@ void ViewerState::ChangeDistance(double factor) {
 
 // The next axis of the cycle, for this model only, prepared on the event
 // loop's worker; the view stays (turning by an axis permutation keeps the
-// bounding box's diagonal, so the fit too).
+// bounding box's diagonal and the sphere, so the distances; the width's
+// cylinder, and so d, follow the new up axis).
 void ViewerState::CycleUpAxis() {
   if (!hasModel_) return;
   pending_ = LoadRequest{paths_[current_], current_, NextUpAxis(scene_->upAxis)};

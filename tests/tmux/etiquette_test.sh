@@ -27,8 +27,11 @@ check "nothing written while idle" "x == 0" "$(value 'idle: bytes written')"
 check "no CPU while idle" "x <= 0.05" "$(value 'idle: CPU seconds')"
 check "a held key's queued presses draw few frames" "x <= 3" "$(value 'held key, frames drawn')"
 # The budget: 160x48 with a bg colour a cell (the viewer's default in a UTF-8
-# locale is quadrants, which paints fg and bg: 8000 bytes measured; 3400 for
-# ascii in the C locale; a full repaint of the colour frame is about 8000).
-check "an arrow key redraws only what changed" "x < 9000" "$(value 'per arrow key (median), bytes')"
+# locale is quadrants, which paints fg and bg; ascii in the C locale): an
+# arrow key's frame within 1.18 times the first, full one (9674 and 9020
+# bytes measured; 1.18 was 9000 over 7653 before the viewer's framing grew
+# the model, docs/over-ssh.md).
+first=$(value 'first frame, bytes')
+check "an arrow key redraws only what changed" "x < 1.18 * $first" "$(value 'per arrow key (median), bytes')"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
