@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <vector>
 
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
@@ -34,6 +35,7 @@
 #include "tui/StatusFields.h"
 #include "tui/StatusLine.h"
 #include "tui/TerminalColours.h"
+#include "tui/TerminalQueries.h"
 #include "tui/TerminalSession.h"
 #include "tui/TerminalWriter.h"
 #include "tui/ViewCommand.h"
@@ -58,6 +60,14 @@ constexpr auto kSuspendAnswerWait = std::chrono::milliseconds(1000);
 constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is looked at
 // How long the rest of a mouse report that has begun may take to arrive.
 constexpr int kReportRestMs = 50;
+
+/// What the terminal's start-up answers may decide: only what no option fixed.
+struct AnswerUse {
+  bool colour = false;      ///< --color auto: truecolor where the terminal says it has it
+  bool background = false;  ///< no --background
+  bool cellAspect = false;  ///< no --cell-aspect, and TIOCGWINSZ gave no pixel size
+  ColourMode terminalColours = ColourMode::kNone;  ///< the most terminfo and COLORTERM say
+};
 
 /// How the event loop ended.
 struct LoopOutcome {
@@ -111,20 +121,19 @@ RayBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
 
 class EventLoop {
  public:
-  EventLoop(ViewerState& state, TerminalSession& session, ViewerRecording* recording)
+  EventLoop(ViewerState& state, TerminalSession& session, ViewerRecording* recording,
+            AnswerUse answerUse)
       : state_(state),
         session_(session),
         recording_(recording),
         writer_(STDOUT_FILENO),
         input_([&session] { return session.NextKey(); },
-               [&session] { return session.NextKeyWithin(kReportRestMs); }) {}
+               [&session] { return session.NextKeyWithin(kReportRestMs); }),
+        answerUse_(answerUse) {}
 
   LoopOutcome Run() {
     LoopOutcome outcome;
-    // Ahead of the first frame's bytes: whether the terminal answers is
-    // known within a round trip, however slow the link.
-    writer_.Send(FramePacer::kRequest);
-    pacer_.RequestSent(Clock::now(), 0);
+    AskTerminal();
     while (!state_.QuitRequested() && !state_.StartError()) {
       StartRequestedLoad();
       if (dirty_ && MayDraw()) {
@@ -164,6 +173,7 @@ class EventLoop {
       if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
       // Step 2: every key that queued up while drawing or waiting for the
       // terminal, applied before one redraw: the next frame shows the newest view.
+      input_.SetAnswerDue(pacer_.Answering() && pacer_.RequestsInFlight() > 0);
       for (auto event = input_.Next(); event; event = input_.Next()) HandleInput(*event);
       if (state_.Turntable() != turning_) {  // space: turning starts (or stops) now
         turning_ = state_.Turntable();
@@ -193,6 +203,50 @@ class EventLoop {
   }
 
  private:
+  // Ahead of the first frame's bytes, in one write: the start-up queries
+  // and the DA1 request (whether the terminal answers is known within a
+  // round trip, however slow the link). Their answers are read for up to
+  // kStartupAnswerWaitMs, the DA1 answer (always the last) ending the wait;
+  // keys typed meanwhile are handled after.
+  void AskTerminal() {
+    writer_.Send(std::string(kStartupQueries) + std::string(FramePacer::kRequest));
+    pacer_.RequestSent(Clock::now(), 0);
+    TerminalAnswers answers;
+    std::vector<InputEvent> early;
+    const auto deadline = Clock::now() + std::chrono::milliseconds(kStartupAnswerWaitMs);
+    input_.SetAnswerDue(true);
+    for (bool lastAnswer = false; !lastAnswer;) {
+      const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+      if (left.count() <= 0) break;
+      pollfd fd{STDIN_FILENO, POLLIN, 0};
+      if (poll(&fd, 1, static_cast<int>(left.count())) < 0 && errno != EINTR) break;
+      if ((fd.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
+      for (auto event = input_.Next(); event; event = input_.Next()) {
+        if (event->reply) {
+          TakeReply(*event->reply, answers);
+        } else if (event->deviceAnswer) {
+          HandleInput(*event);
+          lastAnswer = true;
+        } else {
+          early.push_back(*event);
+        }
+      }
+    }
+    UseAnswers(answers);
+    for (const InputEvent& event : early) HandleInput(event);
+  }
+
+  // What the answers said, where no option decided it.
+  void UseAnswers(const TerminalAnswers& answers) {
+    if (answerUse_.background && answers.background) state_.SetBackground(*answers.background);
+    if (answerUse_.cellAspect && answers.cellAspect > 0.0) state_.SetCellAspect(answers.cellAspect);
+    const ColourMode best =
+        answers.directColour ? ColourMode::kTrueColour : answerUse_.terminalColours;
+    ColourMode now = state_.Colour();
+    if (answerUse_.colour && now != ColourMode::kNone) now = std::max(now, best);
+    state_.SetColourModes(now, best);
+  }
+
   // Whether a frame may go out now: the terminal has answered for the last
   // one (FramePacer); one that does not answer has taken all that was sent.
   bool MayDraw() {
@@ -236,6 +290,7 @@ class EventLoop {
       pollfd fd{STDIN_FILENO, POLLIN, 0};
       if (poll(&fd, 1, static_cast<int>(left.count())) < 0 && errno != EINTR) return;
       if ((fd.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) return;  // terminal gone
+      input_.SetAnswerDue(true);
       for (auto event = input_.Next(); event; event = input_.Next()) {
         if (event->deviceAnswer) pacer_.AnswerRead(Clock::now());
       }
@@ -384,6 +439,7 @@ class EventLoop {
   }
 
   void HandleInput(const InputEvent& event) {
+    if (event.reply) return;  // an answer come late: never a key
     if (event.deviceAnswer) {
       pacer_.AnswerRead(Clock::now());
       motion_.RoundTripMeasured(pacer_.LastRoundTripSeconds());
@@ -629,8 +685,9 @@ class EventLoop {
   std::optional<std::pair<int, int>> Compose(const Scene& drawn, const std::string& status,
                                              bool cheap, ScreenGrid& grid) {
     const int levelCount = state_.Render().ramp.LevelCount();
-    CellColourMap colours(drawn.source.faceColors, levelCount,
-                          cheap ? ColourMode::k256 : state_.Colour(), state_.Background());
+    // Cheap frames: the 256 colours, or the terminal's fewer.
+    const ColourMode mode = cheap ? std::min(ColourMode::k256, state_.Colour()) : state_.Colour();
+    CellColourMap colours(drawn.source.faceColors, levelCount, mode, state_.Background());
     painter_.PaintFrame(cells_, colours, grid, levelCount, cheap ? MotionFrames::kMotionLevels : 0);
     if (state_.HelpShown()) painter_.PaintHelp(grid);
     if (!prompting_) {
@@ -679,6 +736,9 @@ class EventLoop {
       fields.leadIsModel = !state_.LightMode();
     }
     fields.glyphs = std::string(GlyphModeName(render.glyphs));
+    fields.colour = state_.Colour() == ColourMode::kNone
+                        ? std::string("mono")
+                        : std::string(ColourModeName(state_.Colour()));
     if (pick.level > 0) {  // "lod 2/4 30.8k": the level drawn, of how many, its triangles
       fields.detail = "lod " + std::to_string(pick.level) + "/" +
                       std::to_string(state_.Levels()->levels.size()) + " " +
@@ -719,6 +779,7 @@ class EventLoop {
   bool prompting_ = false;
   bool dirty_ = true;
   InputDecoder input_;
+  AnswerUse answerUse_;
   bool dragging_ = false;
   int dragCol_ = 0;
   int dragRow_ = 0;
@@ -779,7 +840,12 @@ int RunViewer(const ViewerOptions& options) {
                     utf8);
     // The first model loads on the worker too: the screen says so at once.
     state.RequestFirst();
-    EventLoop loop(state, session, recording ? &*recording : nullptr);
+    AnswerUse answerUse;
+    answerUse.colour = options.colour == ColourMode::kAuto;
+    answerUse.background = !options.background;
+    answerUse.cellAspect = !options.cellAspect && TerminalSession::ReportedCellAspect() == 0.0;
+    answerUse.terminalColours = DetectTerminalColourMode();
+    EventLoop loop(state, session, recording ? &*recording : nullptr, answerUse);
     outcome = loop.Run();
     if (recording) recordError = recording->Finish(std::chrono::steady_clock::now());
   }  // the terminal is given back here
