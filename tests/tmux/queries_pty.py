@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""The viewer's start-up queries against a terminal played here on a pty.
+
+Usage: queries_pty.py TERMSHADE MODEL
+A silent terminal (answers nothing): the first frame follows the queries
+after the 100 ms wait, not much later, and the status line says 256. An
+answering one (DA1 at once, RGB by XTGETTCAP, a light background): the
+frame comes at once and the status line says truecolor. Prints the
+measured waits; exits 1 on a failure.
+"""
+import os
+import pty
+import select
+import sys
+import time
+
+QUERIES = b"\x1b]11;?\x1b\\\x1bP+q524742\x1b\\\x1bP+q5463\x1b\\\x1b[16t\x1b[c"
+ANSWERS = (b"\x1b]11;rgb:ffff/ffff/ffff\x1b\\\x1bP1+r524742\x1b\\\x1bP0+r5463\x1b\\"
+           b"\x1b[6;17;8t\x1b[?62;22c")
+
+
+def Run(binary, model, answer):
+    """Returns (ms from the queries to the first frame, all output)."""
+    pid, fd = pty.fork()
+    if pid == 0:
+        os.environ.update(TERM="xterm-256color", LANG="C.UTF-8")
+        os.environ.pop("COLORTERM", None)
+        os.environ.pop("NO_COLOR", None)
+        os.execv(binary, [binary, "--lod", "off", model])
+    out, asked, framed = b"", None, None
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline and framed is None:
+        ready, _, _ = select.select([fd], [], [], 0.01)
+        if not ready:
+            continue
+        try:
+            data = os.read(fd, 65536)
+        except OSError:
+            break
+        now = time.monotonic()
+        out += data
+        if asked is None and QUERIES in out:
+            asked = now
+            if answer:
+                os.write(fd, ANSWERS)
+            out = out[out.index(QUERIES) + len(QUERIES):]
+        elif asked is not None and os.path.basename(model).encode() in out:
+            framed = now
+    time.sleep(0.3)  # later frames (the status line settles)
+    while select.select([fd], [], [], 0.2)[0]:
+        try:
+            out += os.read(fd, 65536)
+        except OSError:
+            break
+    os.write(fd, b"q")
+    os.waitpid(pid, 0)
+    if asked is None or framed is None:
+        return None, out
+    return (framed - asked) * 1000.0, out
+
+
+def main():
+    binary, model = sys.argv[1], sys.argv[2]
+    failed = 0
+    silent_ms, out = Run(binary, model, answer=False)
+    print(f"silent terminal: first frame {silent_ms} ms after the queries")
+    if silent_ms is None or not 80 <= silent_ms <= 400:
+        print("FAIL a silent terminal: the wait is not about 100 ms")
+        failed += 1
+    if b" 256 " not in out:
+        print("FAIL a silent terminal: the status line does not say 256")
+        failed += 1
+    answered_ms, out = Run(binary, model, answer=True)
+    print(f"answering terminal: first frame {answered_ms} ms after the queries")
+    if answered_ms is None or answered_ms > 80:
+        print("FAIL an answering terminal: the wait did not end at the DA1 answer")
+        failed += 1
+    if b"truecolor" not in out:
+        print("FAIL an answering terminal with RGB: the status line does not say truecolor")
+        failed += 1
+    for leak in (b"rgb:", b"+r5", b"62;22"):
+        if leak in out:
+            print(f"FAIL answer bytes {leak!r} came out in the picture")
+            failed += 1
+    print("FAILED" if failed else "ok")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
