@@ -251,6 +251,19 @@ TEST(InputDecoder, AnEscFollowedByNothingIsAKeyAndAStaleAnswerIsDropped) {
   ASSERT_TRUE(events[0].reply.has_value());
   EXPECT_EQ(events[0].reply->kind, TerminalReply::Kind::kOther);
   EXPECT_EQ(events[1].key, 'q');
+  // An Esc while an answer is due, and no byte after it: a key once a second has passed.
+  keys = {27, kGap, kGap};
+  decoder.SetAnswerDue(true);
+  EXPECT_FALSE(decoder.Next().has_value());
+  EXPECT_FALSE(decoder.Next().has_value());
+  EXPECT_TRUE(decoder.WaitsForRest());
+  clock += std::chrono::milliseconds(500);
+  EXPECT_FALSE(decoder.Next().has_value());
+  clock += std::chrono::milliseconds(600);
+  const auto esc = decoder.Next();
+  ASSERT_TRUE(esc.has_value());
+  EXPECT_EQ(esc->key, 27);
+  EXPECT_FALSE(decoder.WaitsForRest());
 }
 
 TEST(InputDecoder, TheStartUpQueriesAnswersAreDecoded) {

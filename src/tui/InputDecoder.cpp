@@ -103,31 +103,19 @@ std::optional<InputEvent> InputDecoder::Next() {
       Feed(key);
       continue;
     }
-    // Inside a sequence: its rest is awaited (once, for an answer stalled before).
+    // Inside a sequence: its rest is awaited (once, for one stalled before).
+    // An answer waits across calls, never keys; so does any sequence while
+    // one is due; a second without a byte ends the wait.
     const int key = Read(!stalled_);
-    if (key == kNoInput) {
-      // An answer waits across calls, never keys; so does any sequence while one is due.
-      if (answer_ || answerDue_) {
-        stalled_ = true;
-        return std::nullopt;
-      }
-      if (state_ == State::kEscape) {
-        Finish(KeyEvent(kEscape));  // a lone Esc
-      } else {
-        GiveBack();
-      }
-      continue;
+    const bool stale = stalled_ && now_() - lastByte_ > kAnswerGapLimit;
+    if (key == kNoInput && (answer_ || answerDue_) && !stale) {
+      stalled_ = true;
+      return std::nullopt;
     }
-    if (stalled_ && now_() - lastByte_ > kAnswerGapLimit) {  // its rest never came
-      if (answer_) {
-        Drop();
-      } else if (state_ == State::kEscape) {
-        Finish(KeyEvent(kEscape));
-      } else {
-        pending_.push_front(key);  // read again after what is given back
-        GiveBack();
-        continue;
-      }
+    if (key == kNoInput || stale) {
+      if (key != kNoInput) pending_.push_front(key);  // read again after the sequence
+      GiveUp();
+      continue;
     }
     stalled_ = false;
     Feed(key);
@@ -326,6 +314,18 @@ void InputDecoder::GiveBack() {
   pending_.insert(pending_.begin(), sequence_.begin() + 1, sequence_.end());
   held_.clear();
   Finish(KeyEvent(kEscape));
+}
+
+// A sequence whose rest did not come: an answer is dropped, a lone ESC is
+// the Esc key, anything else its keys.
+void InputDecoder::GiveUp() {
+  if (answer_) {
+    Drop();
+  } else if (state_ == State::kEscape) {
+    Finish(KeyEvent(kEscape));
+  } else {
+    GiveBack();
+  }
 }
 
 // An answer cut short or too long: read, and of no use.

@@ -51,7 +51,7 @@ struct InputEvent {
 /// While an answer is due (SetAnswerDue) any sequence cut short waits as an
 /// answer does (an answer's ESC may arrive alone, its rest later): an Esc is
 /// then one that something other than [, ] or P follows, or nothing for a
-/// second.
+/// second (a call of Next() after it: WaitsForRest).
 class InputDecoder {
  public:
   using Clock = std::chrono::steady_clock;
@@ -66,6 +66,9 @@ class InputDecoder {
   bool InsideAnswer() const { return answer_; }
   /// Whether the terminal owes an answer (a request in flight).
   void SetAnswerDue(bool due) { answerDue_ = due; }
+  /// Whether a sequence cut short waits for its rest: Next() should be
+  /// called again within a second, though no input comes, to give it up.
+  bool WaitsForRest() const { return stalled_; }
 
  private:
   enum class State { kGround, kEscape, kCsi, kX10, kOsc, kDcs, kStringEnd };
@@ -80,6 +83,7 @@ class InputDecoder {
   void FinishCsi(int finalByte);
   void Finish(InputEvent event);
   void GiveBack();
+  void GiveUp();
   void Drop();
   void Emit(InputEvent event) { ready_.push_back(std::move(event)); }
 

@@ -60,6 +60,8 @@ constexpr auto kSuspendAnswerWait = std::chrono::milliseconds(1000);
 constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is looked at
 // How long the rest of a mouse report that has begun may take to arrive.
 constexpr int kReportRestMs = 50;
+// How often a sequence cut short is looked at while its rest has not come.
+constexpr int kRestGiveUpPollMs = 250;
 
 /// What the terminal's start-up answers may decide: only what no option fixed.
 struct AnswerUse {
@@ -160,6 +162,7 @@ class EventLoop {
       }
       wakeWithin(motion_.WakeMs(now, turning_));  // the full frame after cheap ones
       if (job_ || retired_.Count() > 0) wakeWithin(kLoadProgressPollMs);
+      if (input_.WaitsForRest()) wakeWithin(kRestGiveUpPollMs);  // to give it up in time
       pollfd fds[5] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
                        {job_ ? job_->ReadyFd() : -1, POLLIN, 0},
