@@ -304,6 +304,14 @@ TEST(InputDecoder, AnswersSplitWithGapsAndBadOnesNeverBecomeKeys) {
   EXPECT_EQ(decoded.events[0].reply->kind, TerminalReply::Kind::kBackgroundColour);
   EXPECT_EQ(decoded.events[1].reply->kind, TerminalReply::Kind::kCapability);
   EXPECT_EQ(decoded.events[2].reply->kind, TerminalReply::Kind::kOther);
+  // A string's ESC followed by a control key (input_fuzzer's finding): the
+  // string ends there, and ESC and the key come out in the order sent.
+  const auto cut = Decode("\x1b]1;r\x1b\x01q");
+  ASSERT_EQ(cut.size(), 4U);
+  EXPECT_TRUE(cut[0].reply.has_value());
+  EXPECT_EQ(cut[1].key, 27);
+  EXPECT_EQ(cut[2].key, 1);
+  EXPECT_EQ(cut[3].key, 'q');
   // Alt-] and Alt-P followed by a letter stay keys; so does a CSI t that is no cell size.
   for (const std::string& bytes :
        {std::string("\x1b]x"), std::string("\x1bPq"), std::string("\x1b[8;24;80t")}) {

@@ -144,6 +144,10 @@ void InputDecoder::Feed(int key) {
     FeedX10(key);
     return;
   }
+  if (state_ == State::kStringEnd) {  // anything but \ after the ESC ends the string
+    FeedStringEnd(key);
+    return;
+  }
   // A control key or a special key (ncurses' codes) typed into a sequence
   // is a key: at once in an answer, after the sequence otherwise.
   const bool control = key > 255 || (key < 32 && key != kEscape);
@@ -158,8 +162,6 @@ void InputDecoder::Feed(int key) {
   }
   if (state_ == State::kCsi) {
     FeedCsi(key);
-  } else if (state_ == State::kStringEnd) {
-    FeedStringEnd(key);
   } else {
     FeedString(key);
   }
