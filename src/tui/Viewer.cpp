@@ -210,44 +210,45 @@ class EventLoop {
   // and the DA1 request (whether the terminal answers is known within a
   // round trip, however slow the link). Their answers are read for up to
   // kStartupAnswerWaitMs, the DA1 answer (always the last) ending the wait;
-  // keys typed meanwhile are handled after.
+  // keys typed meanwhile are handled after. Answers later than the wait (a
+  // slow link) still count until the DA1 answer (HandleInput).
   void AskTerminal() {
     writer_.Send(std::string(kStartupQueries) + std::string(FramePacer::kRequest));
     pacer_.RequestSent(Clock::now(), 0);
-    TerminalAnswers answers;
     std::vector<InputEvent> early;
     const auto deadline = Clock::now() + std::chrono::milliseconds(kStartupAnswerWaitMs);
     input_.SetAnswerDue(true);
-    for (bool lastAnswer = false; !lastAnswer;) {
+    while (!startupAnswered_) {
       const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
       if (left.count() <= 0) break;
       pollfd fd{STDIN_FILENO, POLLIN, 0};
       if (poll(&fd, 1, static_cast<int>(left.count())) < 0 && errno != EINTR) break;
       if ((fd.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
       for (auto event = input_.Next(); event; event = input_.Next()) {
-        if (event->reply) {
-          TakeReply(*event->reply, answers);
-        } else if (event->deviceAnswer) {
+        if (event->reply || event->deviceAnswer) {
           HandleInput(*event);
-          lastAnswer = true;
         } else {
           early.push_back(*event);
         }
       }
     }
-    UseAnswers(answers);
     for (const InputEvent& event : early) HandleInput(event);
   }
 
-  // What the answers said, where no option decided it.
-  void UseAnswers(const TerminalAnswers& answers) {
-    if (answerUse_.background && answers.background) state_.SetBackground(*answers.background);
-    if (answerUse_.cellAspect && answers.cellAspect > 0.0) state_.SetCellAspect(answers.cellAspect);
+  // One answer to the start-up queries, and what the answers say now, where
+  // no option decided it.
+  void TakeAnswer(const TerminalReply& reply) {
+    TakeReply(reply, answers_);
+    if (answerUse_.background && answers_.background) state_.SetBackground(*answers_.background);
+    if (answerUse_.cellAspect && answers_.cellAspect > 0.0) {
+      state_.SetCellAspect(answers_.cellAspect);
+    }
     const ColourMode best =
-        answers.directColour ? ColourMode::kTrueColour : answerUse_.terminalColours;
+        answers_.directColour ? ColourMode::kTrueColour : answerUse_.terminalColours;
     ColourMode now = state_.Colour();
     if (answerUse_.colour && now != ColourMode::kNone) now = std::max(now, best);
     state_.SetColourModes(now, best);
+    dirty_ = true;
   }
 
   // Whether a frame may go out now: the terminal has answered for the last
@@ -442,8 +443,12 @@ class EventLoop {
   }
 
   void HandleInput(const InputEvent& event) {
-    if (event.reply) return;  // an answer come late: never a key
+    if (event.reply) {  // the start-up queries' answers; any other is dropped
+      if (!startupAnswered_) TakeAnswer(*event.reply);
+      return;
+    }
     if (event.deviceAnswer) {
+      startupAnswered_ = true;
       pacer_.AnswerRead(Clock::now());
       motion_.RoundTripMeasured(pacer_.LastRoundTripSeconds());
       return;
@@ -783,6 +788,8 @@ class EventLoop {
   bool dirty_ = true;
   InputDecoder input_;
   AnswerUse answerUse_;
+  TerminalAnswers answers_;       ///< what the start-up queries' answers said
+  bool startupAnswered_ = false;  ///< the first DA1 answer came: no more of them
   bool dragging_ = false;
   int dragCol_ = 0;
   int dragRow_ = 0;

@@ -3,7 +3,8 @@
 # colour mode, c cycles the modes the terminal has (256, 16, mono, 256), and
 # after q the shell's line holds nothing of the terminal's answers. On a pty
 # played by queries_pty.py: a silent terminal costs the 100 ms wait, an
-# answering one ends it at its DA1 answer and its RGB makes truecolor.
+# answering one ends it at its DA1 answer and its RGB makes truecolor, a
+# late one (300 ms) gets the first frame after the wait and truecolor later.
 # Usage: queries_test.sh path/to/termshade
 set -u
 bin=$(realpath "$1")
