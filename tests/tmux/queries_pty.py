@@ -4,14 +4,17 @@
 Usage: queries_pty.py TERMSHADE MODEL
 A silent terminal (answers nothing): the first frame follows the queries
 after the 100 ms wait, not much later, and the status line says 256. An
-answering one (DA1 at once, RGB by XTGETTCAP, a light background): the
-frame comes at once and the status line says truecolor. One answering
+answering one (DA1 at once, RGB by XTGETTCAP, a light background, an
+8x17-pixel cell): the frame comes at once, the status line says truecolor
+and y's render command (copied by OSC 52) has the background and aspect. One answering
 300 ms late (a slow link): the first frame after the wait, truecolor once
 the answers come. Nothing of the answers appears in the output. Prints the
 measured waits; exits 1 on a failure.
 """
+import base64
 import os
 import pty
+import re
 import select
 import sys
 import time
@@ -57,6 +60,16 @@ def Run(binary, model, answer_after):
             out = out[out.index(QUERIES) + len(QUERIES):]
         elif asked is not None and framed is None and os.path.basename(model).encode() in out:
             framed = now
+    # y: the status line shows the render command of the view, with what
+    # the answers decided (background, cell aspect, colour).
+    os.write(fd, b"y")
+    end = time.monotonic() + 1.0
+    while time.monotonic() < end and b"\x1b]52;" not in out:
+        if select.select([fd], [], [], 0.05)[0]:
+            try:
+                out += os.read(fd, 65536)
+            except OSError:
+                break
     os.write(fd, b"q")
     os.waitpid(pid, 0)
     if asked is None or framed is None:
@@ -83,6 +96,14 @@ def main():
     if b"truecolor" not in out:
         print("FAIL an answering terminal with RGB: the status line does not say truecolor")
         failed += 1
+    # The whole command is in the OSC 52 copy to the clipboard (the status line elides it).
+    copied = re.search(rb"\x1b\]52;c;([A-Za-z0-9+/=]*)", out)
+    command = base64.b64decode(copied.group(1)) if copied else b""
+    print(f"answering terminal: y gives {command.decode()}")
+    for said in (b"--background light", b"--cell-aspect 2.125", b"--color truecolor"):
+        if said not in command:
+            print(f"FAIL an answering terminal: the render command lacks {said.decode()}")
+            failed += 1
     slow_ms, slow = Run(binary, model, 0.3)
     print(f"terminal answering after 300 ms: first frame {slow_ms} ms after the queries")
     if slow_ms is None or not 80 <= slow_ms <= 290:
