@@ -4,9 +4,9 @@
 # the Assimp path of the model loader (model_fuzzer: OBJ, PLY, STL, OFF,
 # glTF, GLB, COLLADA, unnamed content) and our readers against their plain
 # forms (reader_fuzzer), and the import helper's answer as termshade reads it
-# (wire_fuzzer), the viewer's input decoder on keys and mouse reports
-# (input_fuzzer), and option values, the environment and configuration files
-# (option_fuzzer), each from a seed corpus of our files.
+# (wire_fuzzer), the viewer's input decoder on keys, mouse reports and the
+# terminal's answers (input_fuzzer), and option values, the environment and
+# configuration files (option_fuzzer), each from a seed corpus of our files.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
@@ -61,6 +61,8 @@ printf '\x1b[<0;41;13M\x1b[<32;46;13M\x1b[<0;51;15m' >"$work/input/sgr"
 printf '\x1b[M !!\x1b[M#AB' >"$work/input/x10"
 printf '\x1b[<0;4\xfe1;13Mq' >"$work/input/split"
 printf 'a\xfd\x03\x1b[<64;3;4M\xfd\x02' >"$work/input/keys"
+printf '\x1b]11;rgb:ffff/ffff/ffff\x1b\\\x1bP1+r524742\x1b\\\x1bP0+r5463\x1b\\\x1b[6;17;8t\x1b[?62;22c' >"$work/input/answers"
+printf '\x1b\xfe[?6\xfe\x032;\xfe22c\x1b]11;rgb:0/0/0\x07' >"$work/input/answers_split"
 # Option seeds: the first byte picks the parser (option_fuzzer.cpp).
 printf '\x004G' >"$work/option/bytes"
 printf '\x011.5GiB' >"$work/option/bytes-suffix"
