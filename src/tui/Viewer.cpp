@@ -677,11 +677,9 @@ class EventLoop {
     depth_.Resize(cols, frameRows);
     const auto start = Clock::now();
     frameOptions_ = state_.Render();  // assigned in place: no allocation in a steady loop
-    // The block modes with colour: fg and bg, as the ansi dump draws them.
-    const GlyphMode mode = frameOptions_.glyphs;
-    frameOptions_.twoColour = state_.Colour() != ColourMode::kNone &&
-                              (mode == GlyphMode::kBlocks || mode == GlyphMode::kQuadrants ||
-                               mode == GlyphMode::kSextants);
+    // With colour, the cells as the ansi dump draws them (one cell buffer,
+    // many outputs): fg and bg in the block modes, shape-matched ascii.
+    frameOptions_.twoColour = state_.Colour() != ColourMode::kNone;
     const Camera camera = state_.CameraFor(cols, frameRows);
     const DetailPick pick =
         PickDetail(state_.Levels(), state_.CurrentScene(), camera, frameOptions_);
