@@ -10,6 +10,7 @@
 #include "io/write/FrameFormats.h"
 #include "shade/CellColour.h"
 #include "shade/ColourMode.h"
+#include "shade/Palette16.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -141,13 +142,16 @@ TEST(ColourMode, ParsesAndResolvesAuto) {
   EXPECT_EQ(ParseColourMode("256"), ColourMode::k256);
   EXPECT_EQ(ParseColourMode("truecolor"), ColourMode::kTrueColour);
   EXPECT_EQ(ParseColourMode("auto"), ColourMode::kAuto);
-  EXPECT_FALSE(ParseColourMode("16").has_value());
+  EXPECT_EQ(ParseColourMode("16"), ColourMode::k16);
+  EXPECT_FALSE(ParseColourMode("8").has_value());
   EXPECT_EQ(AutoColourMode("1", "truecolor", 256, true), ColourMode::kNone);
   EXPECT_EQ(AutoColourMode("", "truecolor", 8, false), ColourMode::kTrueColour);
   EXPECT_EQ(AutoColourMode("", "24bit", 256, false), ColourMode::kTrueColour);
   EXPECT_EQ(AutoColourMode("", "", 256, true), ColourMode::kTrueColour);
   EXPECT_EQ(AutoColourMode("", "", 256, false), ColourMode::k256);
-  EXPECT_EQ(AutoColourMode("", "", 8, false), ColourMode::kNone);
+  EXPECT_EQ(AutoColourMode("", "", 16, false), ColourMode::k16);
+  EXPECT_EQ(AutoColourMode("", "", 8, false), ColourMode::k16);  // linux, screen, ansi
+  EXPECT_EQ(AutoColourMode("", "", 2, false), ColourMode::kNone);
   EXPECT_EQ(AutoColourMode("", "", -1, false), ColourMode::kNone);
 }
 
@@ -194,6 +198,58 @@ TEST(AnsiFrame, CarriesEachFacesColour) {
                                        .index));
   }
   for (const std::string& seen : sequences) EXPECT_TRUE(expected.count(seen)) << seen;
+}
+
+// The 16-colour mode: SGR 30-37 and 90-97 (40-47, 100-107 behind), a face's
+// shades step from its hue's normal entry to its bright one, and no entry
+// is too close to the background.
+std::string Sgr16(Rgb face, double intensity, Background background, bool behind = false) {
+  const TermColour colour = CellColour(face, intensity, ColourMode::k16, background);
+  EXPECT_EQ(colour.kind, TermColour::Kind::kIndexed);
+  EXPECT_LT(colour.index, 16);
+  std::string out;
+  if (behind) {
+    AppendBackgroundSgr(colour, out);
+  } else {
+    AppendForegroundSgr(colour, out);
+  }
+  return out;
+}
+
+TEST(CellColour, SixteenColoursAreAnsiSgrWithShadesAndHue) {
+  const Rgb grey = kDefaultFaceColour, red{0.8F, 0.05F, 0.05F}, blue{0.1F, 0.2F, 0.8F};
+  EXPECT_EQ(Sgr16(grey, 0.0, Background::kDark), "\x1b[90m");  // dark grey, never black
+  EXPECT_EQ(Sgr16(grey, 1.0, Background::kDark), "\x1b[37m");
+  EXPECT_EQ(Sgr16({1, 1, 1}, 1.0, Background::kDark), "\x1b[97m");
+  EXPECT_EQ(Sgr16(red, 0.3, Background::kDark), "\x1b[31m");
+  EXPECT_EQ(Sgr16(red, 1.0, Background::kDark), "\x1b[91m");
+  EXPECT_EQ(Sgr16(blue, 0.0, Background::kDark), "\x1b[34m");
+  EXPECT_EQ(Sgr16(blue, 1.0, Background::kDark), "\x1b[94m");
+  EXPECT_EQ(Sgr16(blue, 1.0, Background::kDark, true), "\x1b[104m");
+  EXPECT_EQ(Sgr16(red, 0.0, Background::kLight), "\x1b[30m");  // black on white
+  EXPECT_EQ(Sgr16(red, 0.5, Background::kLight, true), "\x1b[41m");
+  for (const Background background : {Background::kDark, Background::kLight}) {
+    const Srgb8 back = background == Background::kDark ? Srgb8{0, 0, 0} : Srgb8{255, 255, 255};
+    for (const Rgb face : {grey, red, blue, Rgb{1, 1, 0}, Rgb{0, 1, 1}, Rgb{1, 1, 1}}) {
+      std::set<int> seen;
+      for (int level = 0; level < 8; ++level) {
+        const TermColour colour = CellColour(face, level / 7.0, ColourMode::k16, background);
+        seen.insert(colour.index);
+        EXPECT_GE(ContrastRatio(kXtermPalette16[colour.index], back), kMinBackgroundContrast);
+      }
+      if (background == Background::kDark) {
+        EXPECT_GE(seen.size(), 2U);  // shading shows
+      }
+    }
+  }
+  // The ansi dump of a 16-colour frame has no 256-colour or 24-bit SGR.
+  Scene scene = test::LoadScene("data/cube.dat");
+  RenderOptions options;
+  const test::Frame frame = test::RenderFrame(scene, 0.3, 1.3, 40, 16, options);
+  std::string ansi;
+  AppendAnsiFrame(frame.cells, {}, options.ramp.LevelCount(), ColourMode::k16, ansi);
+  EXPECT_NE(ansi.find("\x1b[37m"), std::string::npos);
+  EXPECT_EQ(ansi.find("38;"), std::string::npos);
 }
 
 }  // namespace

@@ -174,6 +174,7 @@ TEST(ImportWire, AMeshCrossesWhole) {
   mesh.AddFace(second);
   mesh.segments = {{0, 3}};
   mesh.faceColors = {{0.5F, 0.25F, 1.0F}, {0, 0, 0}};
+  mesh.textures = {"maps/wood.png", "*0"};
   mesh.upAxisFile = UpAxis::kPlusY;
   std::string wire;
   const WireSink sink = [&](const void* from, size_t size) {
@@ -196,6 +197,7 @@ TEST(ImportWire, AMeshCrossesWhole) {
   EXPECT_EQ(status, ModuleStatus::kDone);
   ASSERT_TRUE(read.Ok());
   ExpectSameMesh(read.Value(), mesh, "wire");
+  EXPECT_EQ(read.Value().textures, mesh.textures);
   // Cut anywhere, it is refused; with a limit below its size, too.
   for (size_t cut = 1; cut + 1 < wire.size(); cut += 7) {
     at = 1;

@@ -191,6 +191,41 @@ TEST(ViewerState, LoadsAreRequestedNotDone) {
   EXPECT_EQ(state.Message().substr(0, 7), "opened ");
 }
 
+TEST(ViewerState, CCyclesTheColourModesTheTerminalHas) {
+  ViewerOptions options;
+  options.colour = ColourMode::k256;
+  ViewerState state(options, 0.0);
+  // The terminal said it has 24-bit colour: truecolor, 256, 16, mono, again.
+  state.SetColourModes(ColourMode::kTrueColour, ColourMode::kTrueColour);
+  std::vector<ColourMode> seen;
+  for (int i = 0; i < 5; ++i) {
+    seen.push_back(state.Colour());
+    state.Apply(ViewerAction::kToggleColour);
+  }
+  EXPECT_EQ(seen,
+            (std::vector<ColourMode>{ColourMode::kTrueColour, ColourMode::k256, ColourMode::k16,
+                                     ColourMode::kNone, ColourMode::kTrueColour}));
+  // A 16-colour terminal: 16, mono, 16; started mono (NO_COLOR): c gives its most.
+  state.SetColourModes(ColourMode::kNone, ColourMode::k16);
+  state.Apply(ViewerAction::kToggleColour);
+  EXPECT_EQ(state.Colour(), ColourMode::k16);
+  state.Apply(ViewerAction::kToggleColour);
+  EXPECT_EQ(state.Colour(), ColourMode::kNone);
+  // A terminal of no colour: c still turns 256 on, as before.
+  state.SetColourModes(ColourMode::kNone, ColourMode::kNone);
+  state.Apply(ViewerAction::kToggleColour);
+  EXPECT_EQ(state.Colour(), ColourMode::k256);
+}
+
+TEST(ViewerStatus, NamesTheColourMode) {
+  StatusFields fields;
+  fields.lead = "bunny.obj";
+  fields.colour = "truecolor";
+  fields.method = "zbuffer contrast";
+  EXPECT_EQ(ComposeViewerStatus(fields, 160).substr(0, 41),
+            "bunny.obj | truecolor | zbuffer contrast ");
+}
+
 StatusFields SampleFields() {
   StatusFields fields;
   fields.lead = "/home/someone/models/bunny.obj [2/3]";

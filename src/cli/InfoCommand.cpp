@@ -9,6 +9,7 @@
 #include "geometry/MeshReport.h"
 #include "geometry/Scene.h"
 #include "io/load/ModelLoader.h"
+#include "io/load/TextureReferences.h"
 #include "io/read/LoadError.h"
 #include "io/write/AsciicastRecording.h"
 
@@ -26,6 +27,7 @@ struct ModelInfo {
   std::string drawnUp;
   bool upOverridden = false;
   size_t facesTurnedOutward = 0;
+  std::vector<TextureReference> textures;
   double loadMs = 0.0;
   double peakMiB = 0.0;        ///< this process, so far
   double helperPeakMiB = 0.0;  ///< the import helpers, so far
@@ -45,6 +47,17 @@ std::string Number(double value, const char* format = "%.6g") {
 
 std::string Point(const Vec3& p) {
   return Number(p.x) + ", " + Number(p.y) + ", " + Number(p.z);
+}
+
+// "none named", or each name and where it is: "2: duckCM.tga (found), *0 (embedded)".
+std::string TexturesText(const std::vector<TextureReference>& textures) {
+  if (textures.empty()) return "none named";
+  std::string text = std::to_string(textures.size()) + ":";
+  for (size_t i = 0; i < textures.size(); ++i) {
+    text += (i == 0 ? " " : ", ") + SanitizeForTerminal(textures[i].name) + " (" +
+            std::string(TextureWhereName(textures[i].where)) + ")";
+  }
+  return text + "; not drawn yet (the face colours are)";
 }
 
 void PrintText(const ModelInfo& info) {
@@ -67,6 +80,7 @@ void PrintText(const ModelInfo& info) {
             << (m.faceColours == 0 ? std::string("none given (drawn in the default grey)")
                                    : std::to_string(m.faceColours) + " distinct face colours")
             << "\n"
+            << "  textures     " << TexturesText(info.textures) << "\n"
             << "  load         " << Number(info.loadMs, "%.1f") << " ms, peak memory "
             << Number(info.peakMiB, "%.1f") << " MiB"
             << (info.reader.starts_with("Assimp (import helper)")
@@ -91,8 +105,15 @@ void PrintJson(const ModelInfo& info) {
          "\", \"facesTurnedOutward\": " + std::to_string(info.facesTurnedOutward) +
          ", \"openEdges\": " + std::to_string(m.openEdges) +
          ", \"nonManifoldEdges\": " + std::to_string(m.nonManifoldEdges) +
-         ", \"faceColours\": " + std::to_string(m.faceColours) +
-         ", \"loadMs\": " + Number(info.loadMs, "%.3f") +
+         ", \"faceColours\": " + std::to_string(m.faceColours) + ", \"textures\": [";
+  for (size_t i = 0; i < info.textures.size(); ++i) {
+    out += i == 0 ? "{\"name\": " : ", {\"name\": ";
+    AppendJsonText(SanitizeForTerminal(info.textures[i].name, 4096), out);
+    out += ", \"where\": ";
+    AppendJsonText(std::string(TextureWhereName(info.textures[i].where)), out);
+    out += "}";
+  }
+  out += std::string("]") + ", \"loadMs\": " + Number(info.loadMs, "%.3f") +
          ", \"peakMiB\": " + Number(info.peakMiB, "%.1f") +
          ", \"importHelperPeakMiB\": " + Number(info.helperPeakMiB, "%.1f") + "}\n";
   std::cout << out;
@@ -123,6 +144,7 @@ int RunInfoCommand(const InfoCommandOptions& options) {
     info.reader = loaded.Value().reader;
     info.mesh = ReportMesh(loaded.Value());
     info.fileUp = UpAxisName(loaded.Value().upAxisFile);
+    info.textures = LocateTextures(loaded.Value().textures, path);
     const Scene scene = PrepareScene(std::move(loaded.Value()), options.upAxis);
     info.loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

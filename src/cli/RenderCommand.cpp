@@ -185,7 +185,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   const auto colourMode = options.mono
                               ? std::optional(ColourMode::kNone)
                               : ParseColourMode(options.colour.empty() ? "256" : options.colour);
-  if (!colourMode) return UsageError("--color must be none, 256, truecolor or auto");
+  if (!colourMode) return UsageError("--color must be none, 16, 256, truecolor or auto");
   const auto background = ParseBackground(options.background.empty() ? "dark" : options.background);
   if (!background) return UsageError("--background must be dark or light");
   if (!std::isfinite(options.theta) || !std::isfinite(options.phi) ||

@@ -38,7 +38,7 @@ struct RenderCommandOptions {
   std::string inputFormat;      ///< --input-format: extension for content that cannot be sniffed
   LoadLimits loadLimits;        ///< --memory-budget, --import-seconds
   std::string reader = "auto";  ///< --reader auto|assimp
-  /// --color: none, 256, truecolor or auto; empty: the command's default
+  /// --color: none, 16, 256, truecolor or auto; empty: the command's default
   /// (render: 256, so dumps do not depend on the environment; viewer: auto).
   std::string colour;
   bool mono = false;  ///< --mono: --color none

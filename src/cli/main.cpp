@@ -220,14 +220,16 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
       ->check(CLI::Range(0, 256));
   command
       .add_option("--color", options.colour,
-                  "cell colours: none, 256 (nearest xterm cube or grey entry), truecolor, or auto "
-                  "(from NO_COLOR, COLORTERM and terminfo; the viewer's default; render's is 256)")
-      ->check(CLI::IsMember({"none", "256", "truecolor", "24bit", "auto"}));
+                  "cell colours: none, 16 (the ANSI colours, SGR 30-37 and 90-97), 256 (nearest "
+                  "xterm cube or grey entry), truecolor, or auto (from NO_COLOR, COLORTERM, "
+                  "terminfo and, in the viewer, the terminal's answer; the viewer's default; "
+                  "render's is 256)")
+      ->check(CLI::IsMember({"none", "16", "256", "truecolor", "24bit", "auto"}));
   command.add_flag("--mono", options.mono, "no colour: --color none");
   command
       .add_option("--background", options.background,
                   "the terminal's background the shades are made for: dark or light (render: "
-                  "dark; viewer: from COLORFGBG, else dark)")
+                  "dark; viewer: the terminal's answer (OSC 11), else COLORFGBG, else dark)")
       ->check(CLI::IsMember({"dark", "light"}));
   command
       .add_option("--lod", options.lod,
@@ -460,7 +462,7 @@ int Run(int argc, char** argv) {
       ->check(CLI::IsMember({"ramp", "ascii", "blocks", "quadrants", "sextants", "braille"}));
   terminalCommand
       ->add_option("--color", terminalBench.colour, "the viewer's --color (default: auto)")
-      ->check(CLI::IsMember({"none", "256", "truecolor", "auto"}));
+      ->check(CLI::IsMember({"none", "16", "256", "truecolor", "auto"}));
   std::string linkText;
   terminalCommand
       ->add_option("--link", linkText,

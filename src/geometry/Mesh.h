@@ -12,6 +12,10 @@
 
 namespace termshade {
 
+/// Most textures a mesh names, and most bytes in one's name (the import's answer is refused past them).
+inline constexpr size_t kMaxTextures = 4096;
+inline constexpr size_t kMaxTextureNameBytes = 4096;
+
 /// A polygon model as read from a file: vertices in file space, faces as
 /// counter-clockwise (seen from outside) lists of 0-based vertex indices.
 struct Mesh {
@@ -27,6 +31,10 @@ struct Mesh {
   /// Per face, the colour the file gives (material diffuse, or vertex colours
   /// averaged over the face); empty when the file gives none (SPEC 10).
   std::vector<Rgb> faceColors;
+  /// The base-colour textures the file's materials name, each once, as the
+  /// file writes them (a path relative to the model's folder, or "*N" for
+  /// the file's Nth embedded image); reported, not drawn yet.
+  std::vector<std::string> textures;
   /// The file's up axis: what the file declares, else its format's convention (SPEC 10).
   UpAxis upAxisFile = UpAxis::kPlusZ;
   /// Who read the file and as what ("termshade OBJ reader", "Assimp (import

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <vector>
 
+#include "shade/Palette16.h"
+
 namespace termshade {
 namespace {
 
@@ -51,7 +53,7 @@ std::vector<PaletteEntry> PaletteAgainst(Background background) {
     const Srgb8 colour = Palette256Colour(index);
     const double luminance = RelativeLuminance(colour);
     if (background == Background::kDark ? luminance >= kDarkFloorLuminance
-                                         : luminance <= kLightCeilingLuminance) {
+                                        : luminance <= kLightCeilingLuminance) {
       out.push_back({index, colour});
     }
   }
@@ -124,6 +126,10 @@ TermColour CellColour(Rgb faceLinear, double intensity, ColourMode mode, Backgro
   if (mode == ColourMode::kTrueColour) {
     out.kind = TermColour::Kind::kRgb;
     out.rgb = shaded;
+  } else if (mode == ColourMode::k16) {
+    out.kind = TermColour::Kind::kIndexed;
+    const Srgb8 face = ShadedFaceColour(faceLinear, 1.0, background);
+    out.index = static_cast<uint8_t>(Nearest16Colour(shaded, face, background));
   } else {
     out.kind = TermColour::Kind::kIndexed;
     out.index = static_cast<uint8_t>(Nearest256Colour(shaded, background));

@@ -19,7 +19,8 @@ struct Srgb8 {
 };
 
 /// A cell's colour as sent to a terminal: the terminal's default, an entry of
-/// the xterm 256-colour palette (cube or grey ramp, never redefined), or 24-bit.
+/// the xterm 256-colour palette (cube or grey ramp, never redefined; 0..15:
+/// the 16 ANSI colours, sent as SGR 30-37 and 90-97), or 24-bit.
 struct TermColour {
   enum class Kind : uint8_t { kDefault, kIndexed, kRgb };
   Kind kind = Kind::kDefault;

@@ -5,6 +5,7 @@
 
 #include "shade/Background.h"
 #include "shade/CellColour.h"
+#include "shade/Palette16.h"
 
 namespace termshade {
 
@@ -15,22 +16,7 @@ namespace termshade {
 struct TerminalTheme {
   Srgb8 foreground{192, 192, 192};
   Srgb8 background{0, 0, 0};
-  std::array<Srgb8, 16> palette{{{0, 0, 0},
-                                 {205, 0, 0},
-                                 {0, 205, 0},
-                                 {205, 205, 0},
-                                 {0, 0, 238},
-                                 {205, 0, 205},
-                                 {0, 205, 205},
-                                 {229, 229, 229},
-                                 {127, 127, 127},
-                                 {255, 0, 0},
-                                 {0, 255, 0},
-                                 {255, 255, 0},
-                                 {92, 92, 255},
-                                 {255, 0, 255},
-                                 {0, 255, 255},
-                                 {255, 255, 255}}};
+  std::array<Srgb8, 16> palette = kXtermPalette16;
 };
 
 /// The default theme for a dark terminal, or black on white for a light one.

@@ -25,6 +25,7 @@ std::string ComposeViewerStatus(const StatusFields& fields, int widthCells) {
     kLead,
     kHelp,
     kGlyphs,
+    kColour,
     kDetail,
     kView,
     kMethod,
@@ -60,6 +61,8 @@ std::string ComposeViewerStatus(const StatusFields& fields, int widthCells) {
   }
   if (!fields.detail.empty())
     segments.insert(segments.begin() + 1, {fields.detail, kDetail, false});
+  if (!fields.colour.empty())
+    segments.insert(segments.begin() + 1, {fields.colour, kColour, false});
   if (!fields.glyphs.empty())
     segments.insert(segments.begin() + 1, {fields.glyphs, kGlyphs, false});
   return ComposeStatusLine(std::move(segments), widthCells);

@@ -43,6 +43,11 @@ ColourMode DetectColourMode() {
   return AutoColourMode(Env("NO_COLOR"), Env("COLORTERM"), terminfo.count, terminfo.direct);
 }
 
+ColourMode DetectTerminalColourMode() {
+  const TerminfoColours terminfo = ReadTerminfoColours();
+  return AutoColourMode("", Env("COLORTERM"), terminfo.count, terminfo.direct);
+}
+
 ColourMode ResolveColourMode(ColourMode mode) {
   return mode == ColourMode::kAuto ? DetectColourMode() : mode;
 }

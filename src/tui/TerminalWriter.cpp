@@ -77,16 +77,18 @@ void TerminalWriter::AppendAttributes(const Attributes& wanted) {
   }
   if (wanted.reverse && !current_.reverse) AppendCapability(out_, "rev");
   if (!(wanted.foreground == current_.foreground)) {
-    if (wanted.foreground.kind == TermColour::Kind::kIndexed) {
+    if (wanted.foreground.kind == TermColour::Kind::kIndexed && wanted.foreground.index >= 16) {
       AppendParameterized(out_, "setaf", wanted.foreground.index);
-    } else if (wanted.foreground.kind == TermColour::Kind::kRgb) {
-      AppendForegroundSgr(wanted.foreground, out_);  // no terminfo string for 24-bit colour
+    } else if (wanted.foreground.kind != TermColour::Kind::kDefault) {
+      // 24-bit colour has no terminfo string; the 16 ANSI colours are SGR
+      // 30-37 and 90-97 (an 8-colour entry's setaf cannot give 8-15).
+      AppendForegroundSgr(wanted.foreground, out_);
     }
   }
   if (!(wanted.background == current_.background)) {
-    if (wanted.background.kind == TermColour::Kind::kIndexed) {
+    if (wanted.background.kind == TermColour::Kind::kIndexed && wanted.background.index >= 16) {
       AppendParameterized(out_, "setab", wanted.background.index);
-    } else if (wanted.background.kind == TermColour::Kind::kRgb) {
+    } else if (wanted.background.kind != TermColour::Kind::kDefault) {
       AppendBackgroundSgr(wanted.background, out_);
     }
   }

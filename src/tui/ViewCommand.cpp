@@ -64,10 +64,7 @@ std::string RenderCommandFor(const ViewToReproduce& shown) {
   if (shown.levelOfDetail) command += " --lod auto";
   command += Option("--color", std::string(ColourModeName(shown.colour)));
   command += Option("--background", std::string(BackgroundName(shown.background)));
-  // The ansi dump draws shape-matched ascii for two colours, the viewer for one:
-  // there the text dump has the screen's characters.
-  if (shown.colour != ColourMode::kNone && shown.render.glyphs != GlyphMode::kAscii)
-    command += " --format ansi";
+  if (shown.colour != ColourMode::kNone) command += " --format ansi";
   return command;
 }
 

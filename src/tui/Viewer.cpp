@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <vector>
 
 #include "geometry/LevelOfDetail.h"
 #include "geometry/RayBvh.h"
@@ -36,6 +37,7 @@
 #include "tui/StatusFields.h"
 #include "tui/StatusLine.h"
 #include "tui/TerminalColours.h"
+#include "tui/TerminalQueries.h"
 #include "tui/TerminalSession.h"
 #include "tui/TerminalWriter.h"
 #include "tui/ViewCommand.h"
@@ -60,6 +62,16 @@ constexpr auto kSuspendAnswerWait = std::chrono::milliseconds(1000);
 constexpr int kLoadProgressPollMs = 100;  // how often a load's progress is looked at
 // How long the rest of a mouse report that has begun may take to arrive.
 constexpr int kReportRestMs = 50;
+// How often a sequence cut short is looked at while its rest has not come.
+constexpr int kRestGiveUpPollMs = 250;
+
+/// What the terminal's start-up answers may decide: only what no option fixed.
+struct AnswerUse {
+  bool colour = false;      ///< --color auto: truecolor where the terminal says it has it
+  bool background = false;  ///< no --background
+  bool cellAspect = false;  ///< no --cell-aspect, and TIOCGWINSZ gave no pixel size
+  ColourMode terminalColours = ColourMode::kNone;  ///< the most terminfo and COLORTERM say
+};
 
 /// How the event loop ended.
 struct LoopOutcome {
@@ -113,20 +125,19 @@ RayBvh BuildHierarchy(const Scene& scene, const std::atomic<bool>& cancel) {
 
 class EventLoop {
  public:
-  EventLoop(ViewerState& state, TerminalSession& session, ViewerRecording* recording)
+  EventLoop(ViewerState& state, TerminalSession& session, ViewerRecording* recording,
+            AnswerUse answerUse)
       : state_(state),
         session_(session),
         recording_(recording),
         writer_(STDOUT_FILENO),
         input_([&session] { return session.NextKey(); },
-               [&session] { return session.NextKeyWithin(kReportRestMs); }) {}
+               [&session] { return session.NextKeyWithin(kReportRestMs); }),
+        answerUse_(answerUse) {}
 
   LoopOutcome Run() {
     LoopOutcome outcome;
-    // Ahead of the first frame's bytes: whether the terminal answers is
-    // known within a round trip, however slow the link.
-    writer_.Send(FramePacer::kRequest);
-    pacer_.RequestSent(Clock::now(), 0);
+    AskTerminal();
     while (!state_.QuitRequested() && !state_.StartError()) {
       StartRequestedLoad();
       if (dirty_ && MayDraw()) {
@@ -153,6 +164,7 @@ class EventLoop {
       }
       wakeWithin(motion_.WakeMs(now, turning_));  // the full frame after cheap ones
       if (job_ || retired_.Count() > 0) wakeWithin(kLoadProgressPollMs);
+      if (input_.WaitsForRest()) wakeWithin(kRestGiveUpPollMs);  // to give it up in time
       pollfd fds[5] = {{STDIN_FILENO, POLLIN, 0},
                        {session_.SignalFd(), POLLIN, 0},
                        {job_ ? job_->ReadyFd() : -1, POLLIN, 0},
@@ -166,6 +178,7 @@ class EventLoop {
       if ((fds[0].revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
       // Step 2: every key that queued up while drawing or waiting for the
       // terminal, applied before one redraw: the next frame shows the newest view.
+      input_.SetAnswerDue(pacer_.Answering() && pacer_.RequestsInFlight() > 0);
       for (auto event = input_.Next(); event; event = input_.Next()) HandleInput(*event);
       if (state_.Turntable() != turning_) {  // space: turning starts (or stops) now
         turning_ = state_.Turntable();
@@ -195,6 +208,51 @@ class EventLoop {
   }
 
  private:
+  // Ahead of the first frame's bytes, in one write: the start-up queries
+  // and the DA1 request (whether the terminal answers is known within a
+  // round trip, however slow the link). Their answers are read for up to
+  // kStartupAnswerWaitMs, the DA1 answer (always the last) ending the wait;
+  // keys typed meanwhile are handled after. Answers later than the wait (a
+  // slow link) still count until the DA1 answer (HandleInput).
+  void AskTerminal() {
+    writer_.Send(std::string(kStartupQueries) + std::string(FramePacer::kRequest));
+    pacer_.RequestSent(Clock::now(), 0);
+    std::vector<InputEvent> early;
+    const auto deadline = Clock::now() + std::chrono::milliseconds(kStartupAnswerWaitMs);
+    input_.SetAnswerDue(true);
+    while (!startupAnswered_) {
+      const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+      if (left.count() <= 0) break;
+      pollfd fd{STDIN_FILENO, POLLIN, 0};
+      if (poll(&fd, 1, static_cast<int>(left.count())) < 0 && errno != EINTR) break;
+      if ((fd.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) break;  // terminal gone
+      for (auto event = input_.Next(); event; event = input_.Next()) {
+        if (event->reply || event->deviceAnswer) {
+          HandleInput(*event);
+        } else {
+          early.push_back(*event);
+        }
+      }
+    }
+    for (const InputEvent& event : early) HandleInput(event);
+  }
+
+  // One answer to the start-up queries, and what the answers say now, where
+  // no option decided it.
+  void TakeAnswer(const TerminalReply& reply) {
+    TakeReply(reply, answers_);
+    if (answerUse_.background && answers_.background) state_.SetBackground(*answers_.background);
+    if (answerUse_.cellAspect && answers_.cellAspect > 0.0) {
+      state_.SetCellAspect(answers_.cellAspect);
+    }
+    const ColourMode best =
+        answers_.directColour ? ColourMode::kTrueColour : answerUse_.terminalColours;
+    ColourMode now = state_.Colour();
+    if (answerUse_.colour && now != ColourMode::kNone) now = std::max(now, best);
+    state_.SetColourModes(now, best);
+    dirty_ = true;
+  }
+
   // Whether a frame may go out now: the terminal has answered for the last
   // one (FramePacer); one that does not answer has taken all that was sent.
   bool MayDraw() {
@@ -238,6 +296,7 @@ class EventLoop {
       pollfd fd{STDIN_FILENO, POLLIN, 0};
       if (poll(&fd, 1, static_cast<int>(left.count())) < 0 && errno != EINTR) return;
       if ((fd.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0) return;  // terminal gone
+      input_.SetAnswerDue(true);
       for (auto event = input_.Next(); event; event = input_.Next()) {
         if (event->deviceAnswer) pacer_.AnswerRead(Clock::now());
       }
@@ -404,7 +463,12 @@ class EventLoop {
   }
 
   void HandleInput(const InputEvent& event) {
+    if (event.reply) {  // the start-up queries' answers; any other is dropped
+      if (!startupAnswered_) TakeAnswer(*event.reply);
+      return;
+    }
     if (event.deviceAnswer) {
+      startupAnswered_ = true;
       pacer_.AnswerRead(Clock::now());
       motion_.RoundTripMeasured(pacer_.LastRoundTripSeconds());
       return;
@@ -613,11 +677,9 @@ class EventLoop {
     depth_.Resize(cols, frameRows);
     const auto start = Clock::now();
     frameOptions_ = state_.Render();  // assigned in place: no allocation in a steady loop
-    // The block modes with colour: fg and bg, as the ansi dump draws them.
-    const GlyphMode mode = frameOptions_.glyphs;
-    frameOptions_.twoColour = state_.Colour() != ColourMode::kNone &&
-                              (mode == GlyphMode::kBlocks || mode == GlyphMode::kQuadrants ||
-                               mode == GlyphMode::kSextants);
+    // With colour, the cells as the ansi dump draws them (one cell buffer,
+    // many outputs): fg and bg in the block modes, shape-matched ascii.
+    frameOptions_.twoColour = state_.Colour() != ColourMode::kNone;
     const Camera camera = state_.CameraFor(cols, frameRows);
     const DetailPick pick =
         PickDetail(state_.Levels(), state_.CurrentScene(), camera, frameOptions_);
@@ -649,8 +711,9 @@ class EventLoop {
   std::optional<std::pair<int, int>> Compose(const Scene& drawn, const std::string& status,
                                              bool cheap, ScreenGrid& grid) {
     const int levelCount = state_.Render().ramp.LevelCount();
-    CellColourMap colours(drawn.source.faceColors, levelCount,
-                          cheap ? ColourMode::k256 : state_.Colour(), state_.Background());
+    // Cheap frames: the 256 colours, or the terminal's fewer.
+    const ColourMode mode = cheap ? std::min(ColourMode::k256, state_.Colour()) : state_.Colour();
+    CellColourMap colours(drawn.source.faceColors, levelCount, mode, state_.Background());
     painter_.PaintFrame(cells_, colours, grid, levelCount, cheap ? MotionFrames::kMotionLevels : 0);
     if (state_.HelpShown()) painter_.PaintHelp(grid);
     if (!prompting_) {
@@ -699,6 +762,9 @@ class EventLoop {
       fields.leadIsModel = !state_.LightMode();
     }
     fields.glyphs = std::string(GlyphModeName(render.glyphs));
+    fields.colour = state_.Colour() == ColourMode::kNone
+                        ? std::string("mono")
+                        : std::string(ColourModeName(state_.Colour()));
     if (pick.level > 0) {  // "lod 2/4 30.8k": the level drawn, of how many, its triangles
       fields.detail = "lod " + std::to_string(pick.level) + "/" +
                       std::to_string(state_.Levels()->levels.size()) + " " +
@@ -739,6 +805,9 @@ class EventLoop {
   bool prompting_ = false;
   bool dirty_ = true;
   InputDecoder input_;
+  AnswerUse answerUse_;
+  TerminalAnswers answers_;       ///< what the start-up queries' answers said
+  bool startupAnswered_ = false;  ///< the first DA1 answer came: no more of them
   bool dragging_ = false;
   int dragCol_ = 0;
   int dragRow_ = 0;
@@ -799,7 +868,12 @@ int RunViewer(const ViewerOptions& options) {
                     utf8);
     // The first model loads on the worker too: the screen says so at once.
     state.RequestFirst();
-    EventLoop loop(state, session, recording ? &*recording : nullptr);
+    AnswerUse answerUse;
+    answerUse.colour = options.colour == ColourMode::kAuto;
+    answerUse.background = !options.background;
+    answerUse.cellAspect = !options.cellAspect && TerminalSession::ReportedCellAspect() == 0.0;
+    answerUse.terminalColours = DetectTerminalColourMode();
+    EventLoop loop(state, session, recording ? &*recording : nullptr, answerUse);
     outcome = loop.Run();
     if (recording) recordError = recording->Finish(std::chrono::steady_clock::now());
   }  // the terminal is given back here

@@ -18,7 +18,7 @@ constexpr std::array kKeys{
     ViewerKey{"s", "shading: contrast / lambert", "s"},
     ViewerKey{"b", "back faces: culled / drawn", "b"},
     ViewerKey{"u", "up axis: +z +y +x -z -y -x", "u"},
-    ViewerKey{"c", "colour on / off", "c"},
+    ViewerKey{"c", "colour mode: next the terminal has", "c"},
     ViewerKey{"g", "glyphs: ramp ascii blocks quadrants sextants braille", "g"},
     ViewerKey{"L", "light mode: arrows move the sun", "L"},
     ViewerKey{"space", "turntable on / off", " "},

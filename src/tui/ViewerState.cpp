@@ -41,10 +41,6 @@ Loaded<Scene> LoadViewerScene(const std::string& path, const LoadOptions& option
 ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
     : paths_(options.modelPaths),
       render_(options.render),
-      colourMode_(options.colour == ColourMode::kNone || options.colour == ColourMode::kAuto
-                      ? ColourMode::k256
-                      : options.colour),
-      colourOn_(options.colour != ColourMode::kNone && options.colour != ColourMode::kAuto),
       background_(options.background.value_or(termshade::Background::kDark)),
       upAxis_(options.upAxis),
       loadLimits_(options.loadLimits),
@@ -54,6 +50,14 @@ ViewerState::ViewerState(const ViewerOptions& options, double terminalAspect)
   detail_ = options.detail;
   if (paths_.empty()) paths_.emplace_back();
   cellAspect_ = options.cellAspect.value_or(terminalAspect > 0.0 ? terminalAspect : 2.0);
+  SetColourModes(options.colour == ColourMode::kAuto ? ColourMode::kNone : options.colour,
+                 options.colour);
+}
+
+void ViewerState::SetColourModes(ColourMode now, ColourMode best) {
+  colour_ = now == ColourMode::kAuto ? ColourMode::kNone : now;
+  bestColour_ = std::max(best == ColourMode::kAuto ? ColourMode::kNone : best, colour_);
+  if (bestColour_ == ColourMode::kNone) bestColour_ = ColourMode::k256;
 }
 
 void ViewerState::RequestFirst() {
@@ -235,8 +239,10 @@ void ViewerState::Apply(ViewerAction action) {
         render_.glyphs = NextGlyphMode(render_.glyphs);
       } while (!utf8_ && NeedsUtf8(render_.glyphs));
       break;
-    case ViewerAction::kToggleColour:
-      colourOn_ = !colourOn_;
+    case ViewerAction::kToggleColour:  // from the most the terminal has down to none
+      colour_ = colour_ == ColourMode::kNone
+                    ? bestColour_
+                    : static_cast<ColourMode>(static_cast<int>(colour_) - 1);
       break;
     case ViewerAction::kToggleLightMode:
       lightMode_ = !lightMode_;

@@ -102,10 +102,16 @@ class ViewerState {
   std::optional<UpAxis> UpAxisOverride() const { return upAxis_; }
   /// The most memory and import time a load may take.
   const LoadLimits& Limits() const { return loadLimits_; }
-  /// The colour mode cells are drawn in now (kNone after `c` turned it off).
-  ColourMode Colour() const { return colourOn_ ? colourMode_ : ColourMode::kNone; }
+  /// The colour mode cells are drawn in now (`c` steps it down to kNone).
+  ColourMode Colour() const { return colour_; }
+  /// The terminal's answers: the mode now and the most `c` cycles back to
+  /// (modes from `best` down to kNone; kNone as best means 256).
+  void SetColourModes(ColourMode now, ColourMode best);
   /// The terminal's background the shades are made for.
   termshade::Background Background() const { return background_; }
+  void SetBackground(termshade::Background background) { background_ = background; }
+  /// The cell aspect the terminal said after start-up.
+  void SetCellAspect(double aspect) { cellAspect_ = aspect; }
   /// The glyph mode, and whether the terminal's locale can show the modes beyond ASCII.
   void SetGlyphs(GlyphMode mode, bool utf8) {
     render_.glyphs = mode;
@@ -146,8 +152,8 @@ class ViewerState {
   double fitRho_ = 1.0;
   double cellAspect_ = 2.0;
   RenderOptions render_;
-  ColourMode colourMode_ = ColourMode::k256;  ///< what `c` turns on
-  bool colourOn_ = true;
+  ColourMode colour_ = ColourMode::kNone;
+  ColourMode bestColour_ = ColourMode::k256;  ///< where `c` goes after kNone
   termshade::Background background_ = termshade::Background::kDark;
   bool utf8_ = true;
   std::optional<UpAxis> upAxis_;

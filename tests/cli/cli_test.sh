@@ -77,7 +77,7 @@ check ansi_auto_truecolor 0 "" -- env -u NO_COLOR COLORTERM=truecolor "$bin" ren
 expect ansi_auto_truecolor_24bit grep -q $'\x1b\\[38;2;' "$work/out"
 check ansi_auto_256 0 "" -- env -u NO_COLOR -u COLORTERM TERM=xterm-256color "$bin" render "$src/data/cube.dat" --format ansi --size 30x10 --color auto
 expect ansi_auto_256_indexed grep -q $'\x1b\\[38;5;' "$work/out"
-check bad_color 2 "--color" -- "$bin" render "$src/data/cube.dat" --color 16
+check bad_color 2 "--color" -- "$bin" render "$src/data/cube.dat" --color 8
 # --background: shades made for a light terminal differ from the dark default, with the same text.
 "$bin" render "$src/data/sphere_cone.dat" --format ansi --color truecolor --size 50x16 >"$work/dark.ans"
 check background_light 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --color truecolor --size 50x16 --background light

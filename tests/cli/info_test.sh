@@ -36,6 +36,23 @@ if [ -f /usr/share/assimp/models/Collada/duck.dae ]; then
   expect json_duck_y_up test "$(field "$work/duck.json" 0 upAxisFile)" = +y
   expect json_duck_helper_memory python3 -c 'import json,sys; sys.exit(json.load(open(sys.argv[1]))["importHelperPeakMiB"] <= 0)' "$work/duck.json"
 fi
+# Textures the materials name, and where each is: an OBJ's map_Kd beside it,
+# one its MTL names outside the folder (not looked at), a missing one.
+mkdir -p "$work/tex/sub"
+printf 'mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl wood\nf 1 3 2\nf 1 2 4\nusemtl stone\nf 1 4 3\nusemtl gone\nf 2 3 4\n' >"$work/tex/sub/box.obj"
+printf 'newmtl wood\nKd 1 1 1\nmap_Kd wood.png\nnewmtl stone\nKd 1 1 1\nmap_Kd ../../outside.png\nnewmtl gone\nKd 1 1 1\nmap_Kd gone.png\n' >"$work/tex/sub/box.mtl"
+printf 'PNG' >"$work/tex/sub/wood.png"
+printf 'PNG' >"$work/outside.png"
+"$bin" info "$work/tex/sub/box.obj" >"$work/tex.txt" 2>&1
+expect textures_exit_0 test $? -eq 0
+expect textures_found grep -qE '^  textures +3: .*wood\.png \(found\)' "$work/tex.txt"
+expect textures_outside grep -q 'outside.png (outside the model.s folder (not looked at))' "$work/tex.txt"
+expect textures_missing grep -q 'gone.png (missing)' "$work/tex.txt"
+"$bin" info --format json "$work/tex/sub/box.obj" >"$work/tex.json"
+expect textures_json python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["textures"]; sys.exit(sorted(x["where"] for x in t) != ["found", "missing", "outside the model'"'"'s folder (not looked at)"])' "$work/tex.json"
+"$bin" info "$src/data/cube.dat" | grep -qE '^  textures +none named$'
+expect textures_none test $? -eq 0
+
 "$bin" info --up x --format json "$src/data/cube.dat" >"$work/up.json"
 expect up_option_drawn test "$(field "$work/up.json" 0 upAxisDrawn)" = +x
 

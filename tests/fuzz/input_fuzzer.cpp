@@ -3,8 +3,9 @@
 // now" (the rest arrives later: a report split between reads); 0xFD 0xNN for
 // a key above a byte (ncurses' KEY_ codes, 256 + NN). Decoding must end,
 // read all input, give keys in the order given (none invented; none
-// dropped when no report or answer was found), and give mouse reports only
-// of 6 bytes or more, with cells in range, and DA1 answers of 5 or more.
+// dropped when no report or answer was found and none was left unfinished),
+// and give mouse reports only of 6 bytes or more, with cells in range, DA1
+// answers of 5 or more, other answers of 3 or more.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -60,12 +61,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::vector<int> keys;
   size_t reports = 0;
   size_t answers = 0;
+  size_t replies = 0;
   // Every gap may end a Next() with nullopt; the loop ends once the script is read.
   for (size_t rounds = 0; rounds <= size + 1; ++rounds) {
     while (auto event = decoder.Next()) {
       if (event->deviceAnswer) {
         if (event->mouse || event->key != kNoInput) std::abort();
         ++answers;
+      } else if (event->reply) {
+        if (event->mouse || event->key != kNoInput) std::abort();
+        ++replies;
       } else if (event->mouse) {
         ++reports;
         const MouseReport& m = *event->mouse;
@@ -85,7 +90,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (at == given.size()) std::abort();  // a key not given, or out of order
     ++at;
   }
-  if (keys.size() + 6 * reports + 5 * answers > given.size()) std::abort();
-  if (reports == 0 && answers == 0 && keys.size() != given.size()) std::abort();
+  if (keys.size() + 6 * reports + 5 * answers + 3 * replies > given.size()) std::abort();
+  if (reports == 0 && answers == 0 && replies == 0 && !decoder.InsideAnswer() &&
+      keys.size() != given.size())
+    std::abort();
   return 0;
 }

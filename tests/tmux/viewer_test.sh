@@ -35,11 +35,19 @@ joined_screen() { tm capture-pane -t v -p -J; }
 # The glyph mode the viewer names on its status line (a long message may hide
 # it: then the last one seen).
 glyph_mode_shown() { screen | tail -n 1 | grep -oE ' (ramp|ascii|blocks|quadrants|sextants|braille) ' | head -n 1 | tr -d ' '; }
+# The colour mode named after it ("quadrants | 256"), or nothing.
+colour_mode_shown() {
+  screen | tail -n 1 | grep -oE ' (ramp|ascii|blocks|quadrants|sextants|braille) \| (truecolor|256|16|mono) ' |
+    head -n 1 | sed 's/.*| //; s/ $//'
+}
 last_glyphs=""
+last_colour=""
 note_glyphs() {
-  local shown
+  local shown colour
   shown=$(glyph_mode_shown)
   if [ -n "$shown" ]; then last_glyphs=$shown; fi
+  colour=$(colour_mode_shown)
+  if [ -n "$colour" ]; then last_colour=$colour; fi
 }
 
 wait_for() {  # wait_for REGEX SECONDS: until the screen matches (4x SECONDS under the sanitizers)
@@ -71,8 +79,14 @@ frame_matches_render() {  # NAME ROWS RENDER-ARGS...: screen minus status line =
   screen | head -n "$rows" | sed 's/[[:space:]]*$//' >"$work/screen.txt"
   # The viewer picks its glyph mode for the terminal and names it on the status line.
   note_glyphs
-  # (An ansi dump compares by its characters: SGR sequences dropped.)
-  "$bin" render "$@" --fit --glyphs "${last_glyphs:-none-seen}" | sed 's/\x1b\[[0-9;]*m//g; s/[[:space:]]*$//' >"$work/render.txt"
+  # With colour, the screen's cells are the ansi dump's (compared by its
+  # characters: SGR sequences dropped).
+  local colour=()
+  case " $* " in
+    *" --format "*) ;;
+    *) [ -n "$last_colour" ] && [ "$last_colour" != mono ] && colour=(--format ansi --color "$last_colour") ;;
+  esac
+  "$bin" render "$@" --fit "${colour[@]}" --glyphs "${last_glyphs:-none-seen}" | sed 's/\x1b\[[0-9;]*m//g; s/[[:space:]]*$//' >"$work/render.txt"
   if cmp -s "$work/screen.txt" "$work/render.txt"; then pass; else
     fail "$name: screen differs from 'termshade render $*'"
     diff "$work/screen.txt" "$work/render.txt" | head -20

@@ -24,11 +24,33 @@ bool PutArray(const std::vector<T>& values, const WireSink& sink) {
          (values.empty() || sink(values.data(), values.size() * sizeof(T)));
 }
 
+bool PutStrings(const std::vector<std::string>& texts, const WireSink& sink) {
+  if (!PutValue<uint64_t>(texts.size(), sink)) return false;
+  for (const std::string& text : texts) {
+    if (!PutString(text, sink)) return false;
+  }
+  return true;
+}
+
 bool PutMesh(const Mesh& mesh, const WireSink& sink) {
   return PutString(mesh.name, sink) && PutValue(static_cast<uint8_t>(mesh.upAxisFile), sink) &&
          PutArray(mesh.verticesFile, sink) && PutArray(mesh.faceCorners, sink) &&
          PutArray(mesh.faceStarts, sink) && PutArray(mesh.edgeHidden, sink) &&
-         PutArray(mesh.segments, sink) && PutArray(mesh.faceColors, sink);
+         PutArray(mesh.segments, sink) && PutArray(mesh.faceColors, sink) &&
+         PutStrings(mesh.textures, sink);
+}
+
+// The texture names: at most kMaxTextures, each 1 to kMaxTextureNameBytes bytes.
+bool ReadTextures(WireReader& reader, std::vector<std::string>& textures) {
+  uint64_t count = 0;
+  if (!reader.U64(count)) return false;
+  if (count > kMaxTextures) return reader.Refuse("more texture names than allowed");
+  textures.assign(static_cast<size_t>(count), std::string());
+  for (std::string& texture : textures) {
+    if (!reader.String(texture, kMaxTextureNameBytes)) return false;
+    if (texture.empty()) return reader.Refuse("an empty texture name");
+  }
+  return true;
 }
 
 bool ReadMesh(WireReader& reader, Mesh& mesh) {
@@ -38,7 +60,8 @@ bool ReadMesh(WireReader& reader, Mesh& mesh) {
   mesh.upAxisFile = static_cast<UpAxis>(up);
   if (!reader.Array(mesh.verticesFile) || !reader.Array(mesh.faceCorners) ||
       !reader.Array(mesh.faceStarts) || !reader.Array(mesh.edgeHidden) ||
-      !reader.Array(mesh.segments) || !reader.Array(mesh.faceColors)) {
+      !reader.Array(mesh.segments) || !reader.Array(mesh.faceColors) ||
+      !ReadTextures(reader, mesh.textures)) {
     return false;
   }
   const std::string problem = MeshWireProblem(mesh);

@@ -54,9 +54,17 @@ void AppendJsonString(std::string_view text, std::string& out) {
 
 namespace {
 
-// SGR for one colour plane: 38/39 for the foreground, 48/49 for the background.
+// SGR for one colour plane: 38/39 for the foreground, 48/49 for the
+// background; the 16 ANSI colours as 30-37 and 90-97 (40-47, 100-107),
+// which terminals of 8 or 16 colours know.
 void AppendColourSgr(const TermColour& colour, char plane, std::string& out) {
   out += "\x1b[";
+  if (colour.kind == TermColour::Kind::kIndexed && colour.index < 16) {
+    const int base = plane == '3' ? 30 : 40;
+    AppendNumber(colour.index < 8 ? base + colour.index : base + 60 + colour.index - 8, out);
+    out += 'm';
+    return;
+  }
   out += plane;
   switch (colour.kind) {
     case TermColour::Kind::kDefault:

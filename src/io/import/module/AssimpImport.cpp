@@ -122,6 +122,21 @@ Rgb MeanVertexColor(const aiMesh& mesh, const aiFace& face) {
              std::clamp(sum[2] / n, 0.0f, 1.0f)};
 }
 
+// The base-colour texture a material names (glTF's base colour, else the
+// diffuse map), as the file writes it; empty when it names none.
+std::string MaterialTexture(const aiScene& scene, unsigned materialIndex) {
+  if (materialIndex >= scene.mNumMaterials || scene.mMaterials[materialIndex] == nullptr) return {};
+  const aiMaterial& material = *scene.mMaterials[materialIndex];
+  aiString path;
+  for (const aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
+    if (material.GetTextureCount(type) > 0 &&
+        material.GetTexture(type, 0, &path) == aiReturn_SUCCESS && path.length > 0) {
+      return std::string(path.C_Str(), std::min<size_t>(path.length, kMaxTextureNameBytes));
+    }
+  }
+  return {};
+}
+
 // Builds our mesh: polygons kept, two-corner faces as segments, then vertices
 // welded by exact position (importers such as OBJ's give every corner its own vertex).
 Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
@@ -139,6 +154,11 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
     }
     const std::optional<Rgb> materialColor = FileMaterialColor(scene, mesh.mMaterialIndex);
     const bool vertexColors = mesh.HasVertexColors(0);
+    if (std::string texture = MaterialTexture(scene, mesh.mMaterialIndex);
+        !texture.empty() && out.textures.size() < kMaxTextures &&
+        std::find(out.textures.begin(), out.textures.end(), texture) == out.textures.end()) {
+      out.textures.push_back(std::move(texture));
+    }
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mIndices == nullptr) continue;
