@@ -692,8 +692,13 @@ view_command_matches() {  # NAME CAPTURE-OPTION: y, then the buffer's command ag
   fi
 }
 view_command_matches view_command_truecolor -e
-tm send-keys -t v c
-wait_for ' quadrants ' 5 >/dev/null
+# Shape-matched ascii with colour: the screen's cells are the ansi dump's too.
+tm send-keys -t v g g g g
+wait_for ' ascii \| truecolor ' 5 >/dev/null || fail "g did not reach ascii"
+view_command_matches view_command_ascii_truecolor -e
+# c steps down to 256, 16, then none.
+tm send-keys -t v c c c
+wait_for ' ascii \| mono ' 5 >/dev/null || fail "c did not reach mono"
 view_command_matches view_command_mono -e
 tm send-keys -t v q
 wait_for '^\$ ?$' 5 >/dev/null
