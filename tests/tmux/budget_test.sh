@@ -11,19 +11,7 @@ socket="termshade-budget-$$"
 work=$(mktemp -d)
 failed=0
 
-tm() { tmux -u -L "$socket" -f /dev/null "$@"; }
-cleanup() { tm kill-server 2>/dev/null; sleep 0.2; rm -rf "$work"; }
-trap cleanup EXIT
-fail() { echo "FAIL $1"; failed=$((failed + 1)); }
-wait_for() {  # wait_for REGEX SECONDS
-  local deadline=$((SECONDS + $2))
-  while [ $SECONDS -le "$deadline" ]; do
-    if tm capture-pane -t v -p -J | grep -qE -- "$1"; then return 0; fi
-    sleep 0.1
-  done
-  tm capture-pane -t v -p | tail -n 2
-  return 1
-}
+source "$(dirname "$(realpath "$0")")/../support/tmux_session.sh"
 status_kib() { awk -v f="$2:" '$1 == f { print $2 }' "/proc/$1/status"; }
 
 "$bin" generate sphere --triangles 2000000 -o "$work/big.ply" >/dev/null || { echo "FAIL generate"; exit 1; }

@@ -14,20 +14,7 @@ work=$(mktemp -d)
 failed=0
 loadedEarly=""
 
-tm() { tmux -u -L "$socket" -f /dev/null "$@"; }
-cleanup() { tm kill-server 2>/dev/null; sleep 0.2; rm -rf "$work"; }
-trap cleanup EXIT
-fail() { echo "FAIL $1"; failed=$((failed + 1)); }
-
-wait_for() {  # wait_for REGEX SECONDS
-  local deadline=$((SECONDS + $2))
-  while [ $SECONDS -le "$deadline" ]; do
-    if tm capture-pane -t v -p -J | grep -qE -- "$1"; then return 0; fi
-    sleep 0.05
-  done
-  tm capture-pane -t v -p
-  return 1
-}
+source "$(dirname "$(realpath "$0")")/../support/tmux_session.sh"
 status_field() { awk -v f="$2:" '$1 == f { print $2 }' "/proc/$1/status"; }
 now_ms() { date +%s%3N; }
 

@@ -13,19 +13,7 @@ model=$(realpath "$here/../../data/cube.dat")
 socket="termshade-queries-$$"
 failed=0
 
-tm() { tmux -u -L "$socket" -f /dev/null "$@"; }
-cleanup() { tm kill-server 2>/dev/null; }
-trap cleanup EXIT
-fail() { echo "FAIL $1"; failed=$((failed + 1)); }
-wait_for() {  # wait_for REGEX SECONDS
-  local deadline=$((SECONDS + $2))
-  while [ $SECONDS -le "$deadline" ]; do
-    if tm capture-pane -t v -p -J | grep -qE -- "$1"; then return 0; fi
-    sleep 0.05
-  done
-  tm capture-pane -t v -p
-  return 1
-}
+source "$here/../support/tmux_session.sh"
 
 tm new-session -d -s v -x 120 -y 30 "env -u COLORTERM -u NO_COLOR PS1='shell> ' TERM=tmux-256color bash --norc --noprofile -i"
 tm set-option -t v status off >/dev/null
