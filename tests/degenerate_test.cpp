@@ -98,6 +98,27 @@ TEST(Degenerate, RepeatedTrianglesAreDrawnOnce) {
   RenderEveryWay(scene);
 }
 
+TEST(Degenerate, RepeatedTrianglesWithTheirOwnVerticesAreDrawnOnce) {
+  // Unwelded: every copy has three vertices of its own at the same places;
+  // the reverse turn (the other side) is another triangle.
+  std::string text, faces = "Faces:\n";
+  for (int i = 0; i < 100; ++i) {
+    const int v = 3 * i + 1;
+    text += std::to_string(v) + " 0 0 0\n" + std::to_string(v + 1) + " 1 0 0\n" +
+            std::to_string(v + 2) + " 0 1 0\n";
+    faces += i == 50 ? std::to_string(v) + " " + std::to_string(v + 2) + " " +
+                           std::to_string(v + 1) + ".\n"
+                     : std::to_string(v + 1) + " " + std::to_string(v + 2) + " " +
+                           std::to_string(v) + ".\n";
+  }
+  const Scene scene = FromText(text + faces);
+  EXPECT_EQ(scene.FaceCount(), 100U);
+  ASSERT_EQ(scene.triangles.size(), 2U);
+  EXPECT_EQ(scene.TriangleFace(0), 0U);
+  EXPECT_EQ(scene.TriangleFace(1), 50U);
+  RenderEveryWay(scene);
+}
+
 TEST(Degenerate, ARepeatedPolygonIsTriangulatedOnce) {
   std::string text, face;
   for (int i = 0; i < 100; ++i) {

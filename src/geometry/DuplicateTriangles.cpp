@@ -7,6 +7,8 @@
 
 #include "geometry/Scene.h"
 
+#include <meshoptimizer.h>
+
 namespace termshade {
 namespace {
 
@@ -50,6 +52,23 @@ std::vector<uint8_t> RepeatedTriangles(const uint32_t* indices, size_t triangleC
   return drop;
 }
 
+// The triangles' corners, each vertex replaced by the first vertex at its
+// position (meshoptimizer's shadow index buffer, bit-exact positions).
+std::vector<uint32_t> PositionJoinedCorners(const Scene& scene) {
+  const size_t cornerCount = 3 * scene.triangles.size();
+  std::vector<uint32_t> joined(cornerCount);
+  meshopt_generateShadowIndexBuffer(joined.data(), scene.triangles.front().vertices.data(),
+                                    cornerCount, scene.verticesWorld.data(),
+                                    scene.verticesWorld.size(), sizeof(Vec3), sizeof(Vec3));
+  return joined;
+}
+
+size_t DistinctCount(const std::vector<uint32_t>& corners) {
+  std::vector<uint32_t> sorted = corners;
+  std::sort(sorted.begin(), sorted.end());
+  return static_cast<size_t>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+}
+
 }  // namespace
 
 size_t DropRepeatedTriangles(std::vector<uint32_t>& indices, std::vector<uint32_t>* faces) {
@@ -72,11 +91,20 @@ size_t DropRepeatedTriangles(std::vector<uint32_t>& indices, std::vector<uint32_
 
 size_t DropRepeatedSceneTriangles(Scene& scene, size_t faceCount) {
   const size_t triangleCount = scene.triangles.size();
-  if (triangleCount <= kRepeatCheckTrianglesPerVertex * scene.verticesWorld.size()) return 0;
+  if (triangleCount == 0) return 0;
   static_assert(sizeof(SceneTriangle) == 3 * sizeof(uint32_t));
+  const uint32_t* keys = scene.triangles.front().vertices.data();
+  std::vector<uint32_t> joined;
+  if (triangleCount <= kRepeatCheckTrianglesPerVertex * scene.verticesWorld.size()) {
+    // Few triangles a vertex: repeats only where the mesh is unwelded (each
+    // triangle its own corners, as a .dat may be): compared by position there.
+    if (2 * scene.verticesWorld.size() < 5 * triangleCount) return 0;
+    joined = PositionJoinedCorners(scene);
+    if (triangleCount <= kRepeatCheckTrianglesPerVertex * DistinctCount(joined)) return 0;
+    keys = joined.data();
+  }
   size_t repeated = 0;
-  const std::vector<uint8_t> drop =
-      RepeatedTriangles(scene.triangles.front().vertices.data(), triangleCount, repeated);
+  const std::vector<uint8_t> drop = RepeatedTriangles(keys, triangleCount, repeated);
   if (repeated == 0) return 0;
   // The maps between faces and triangles made explicit, then compacted.
   if (scene.faceTriangleStarts.empty()) {

@@ -26,7 +26,9 @@ size_t DropRepeatedTriangles(std::vector<uint32_t>& indices,
 /// The scene's repeated triangles dropped, the first of each kept (the one of
 /// the lowest face, which the z-buffer draws on a tie): the faces keep their
 /// numbers, a face whose triangles all repeat earlier ones keeps none.
-/// Checked only past kRepeatCheckTrianglesPerVertex triangles a vertex;
+/// Checked only past kRepeatCheckTrianglesPerVertex triangles a vertex, or
+/// for an unwelded mesh (2.5 vertices a triangle or more) past as many a
+/// distinct position, comparing corners by position;
 /// returns how many were dropped. faceCount: the scene's faces (its planes
 /// may not be made yet). Call after the triangles are made and
 /// before the faces are dropped (they must stay: the triangles no longer give them back).

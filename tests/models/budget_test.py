@@ -89,6 +89,18 @@ def ply_255_corners(path):
                 * count)
 
 
+def coincident_own_vertices_dat(path):
+    """200,000 copies of one triangle, each with its own three vertices (.dat:
+    no welding), 7 MB: drawn once, not 200,000 times (15 s at 1000x500 before)."""
+    count = 200000
+    with open(path, "w") as f:
+        for i in range(count):
+            f.write("%d 0 0 0\n%d 1 0 0\n%d 0 1 0\n" % (3 * i + 1, 3 * i + 2, 3 * i + 3))
+        f.write("Faces:\n")
+        for i in range(count):
+            f.write("%d %d %d .\n" % (3 * i + 1, 3 * i + 2, 3 * i + 3))
+
+
 def sphere_2m_ply(path):
     """termshade's own 2M-triangle test sphere (38 MB): levels of detail would
     take about 230 MiB beside it, more than the budget leaves."""
@@ -109,6 +121,8 @@ CASES = [
      ["--size", "1000x500", "--lod", "auto"], "200M"),
     ("repeated_1000gon.obj", repeated_ngon_obj, ["--size", "400x200", "--lod", "auto"], "300M"),
     ("ply_255_corners.ply", ply_255_corners, ["--size", "400x200"], "300M"),
+    ("coincident_own_vertices.dat", coincident_own_vertices_dat,
+     ["--size", "1000x500", "--lod", "auto"], "300M"),
     ("sphere_2m_lod.ply", sphere_2m_ply, ["--size", "160x48", "--lod", "auto"], "250M"),
 ]
 STDIN_BYTES = 200 << 20  # `yes 'v 1 2 3'`, cut at 200 MB: more than the budget lets load
