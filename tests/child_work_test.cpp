@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <csignal>
+#include <stdexcept>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -16,7 +18,7 @@ TEST(ChildWork, TheChildsAnswerComesBackThroughTheSharedBytes) {
   const std::vector<int> input{3, 1, 4, 1, 5};  // the child sees this process's memory
   std::atomic<bool> cancel{false};
   int sum = 0;
-  const bool answered = RunInChild(
+  const ChildOutcome outcome = RunInChild(
       sizeof(int),
       [&](std::byte* shared) {
         int total = 0;
@@ -24,7 +26,7 @@ TEST(ChildWork, TheChildsAnswerComesBackThroughTheSharedBytes) {
         std::memcpy(shared, &total, sizeof total);
       },
       [&](const std::byte* shared) { std::memcpy(&sum, shared, sizeof sum); }, cancel);
-  EXPECT_TRUE(answered);
+  EXPECT_EQ(outcome, ChildOutcome::kAnswered);
   EXPECT_EQ(sum, 14);
 }
 
@@ -36,23 +38,41 @@ TEST(ChildWork, ACancelStopsWorkThatWouldNeverEnd) {
   });
   bool took = false;
   // Without the cancel this never returns (the test would time out).
-  const bool answered = RunInChild(
+  const ChildOutcome outcome = RunInChild(
       8,
       [](std::byte*) {
         for (;;) pause();
       },
       [&](const std::byte*) { took = true; }, cancel);
   canceller.join();
-  EXPECT_FALSE(answered);
+  EXPECT_EQ(outcome, ChildOutcome::kCancelled);
   EXPECT_FALSE(took);
 }
 
 TEST(ChildWork, AChildThatDiesGivesNoAnswer) {
   std::atomic<bool> cancel{false};
   bool took = false;
-  const bool answered = RunInChild(
-      8, [](std::byte*) { _exit(3); }, [&](const std::byte*) { took = true; }, cancel);
-  EXPECT_FALSE(answered);
+  EXPECT_EQ(RunInChild(
+                8, [](std::byte*) { _exit(3); }, [&](const std::byte*) { took = true; }, cancel),
+            ChildOutcome::kDied);
+  // An exception, or a crash with this process's handlers armed: the child
+  // ends quietly (default dispositions, no descriptors), this process goes on.
+  EXPECT_EQ(RunInChild(
+                8, [](std::byte*) { throw std::runtime_error("no"); },
+                [&](const std::byte*) { took = true; }, cancel),
+            ChildOutcome::kDied);
+  struct sigaction previous {};
+  struct sigaction loud {};
+  loud.sa_handler = [](int) {
+    const char text[] = "handler ran in the child\n";
+    (void)!write(STDERR_FILENO, text, sizeof text - 1);
+  };
+  sigaction(SIGUSR1, &loud, &previous);
+  EXPECT_EQ(RunInChild(
+                8, [](std::byte*) { raise(SIGUSR1); }, [&](const std::byte*) { took = true; },
+                cancel),
+            ChildOutcome::kDied);  // SIGUSR1's default ends it, the handler is gone
+  sigaction(SIGUSR1, &previous, nullptr);
   EXPECT_FALSE(took);
 }
 

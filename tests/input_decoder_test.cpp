@@ -321,6 +321,16 @@ TEST(InputDecoder, AnswersSplitWithGapsAndBadOnesNeverBecomeKeys) {
   }
 }
 
+TEST(InputDecoder, AnAnswerLongerThanAnyAskedForIsReadToItsEndNotKeys) {
+  for (const std::string& end : {std::string("\x1b\\"), std::string("\x07")}) {
+    const auto events = Decode("\x1b]11;rgb:" + std::string(1000, 'f') + end + "q");
+    ASSERT_EQ(events.size(), 2U) << end.size();
+    ASSERT_TRUE(events[0].reply.has_value());
+    EXPECT_EQ(events[0].reply->kind, TerminalReply::Kind::kOther);  // of no use
+    EXPECT_EQ(events[1].key, 'q');
+  }
+}
+
 // Random bursts of report fragments and stray bytes (as a hostile or broken
 // terminal might send): decoding ends, every byte is one key or part of one
 // report, and reports' cells are in range.

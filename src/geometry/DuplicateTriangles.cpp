@@ -63,10 +63,15 @@ std::vector<uint32_t> PositionJoinedCorners(const Scene& scene) {
   return joined;
 }
 
-size_t DistinctCount(const std::vector<uint32_t>& corners) {
-  std::vector<uint32_t> sorted = corners;
-  std::sort(sorted.begin(), sorted.end());
-  return static_cast<size_t>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+// How many distinct vertices of vertexCount the corners use.
+size_t DistinctCount(const std::vector<uint32_t>& corners, size_t vertexCount) {
+  std::vector<bool> used(vertexCount, false);
+  size_t count = 0;
+  for (const uint32_t v : corners) {
+    if (!used[v]) ++count;
+    used[v] = true;
+  }
+  return count;
 }
 
 }  // namespace
@@ -100,7 +105,7 @@ size_t DropRepeatedSceneTriangles(Scene& scene, size_t faceCount) {
     // triangle its own corners, as a .dat may be): compared by position there.
     if (2 * scene.verticesWorld.size() < 5 * triangleCount) return 0;
     joined = PositionJoinedCorners(scene);
-    if (triangleCount <= kRepeatCheckTrianglesPerVertex * DistinctCount(joined)) return 0;
+    if (triangleCount <= kRepeatCheckTrianglesPerVertex * DistinctCount(joined, scene.verticesWorld.size())) return 0;
     keys = joined.data();
   }
   size_t repeated = 0;

@@ -162,11 +162,12 @@ constexpr size_t kChildFromTriangles = 500000;
 
 // One level's edge collapse: the indices of `current` reduced towards
 // targetTriangles within relativeError (meshopt_simplify); the reached error
-// in stepError. Returns the index count, or nullopt when cancelled.
+// in stepError. Returns the index count, or nullopt when cancelled or when
+// its child process died (then `failure` says so).
 std::optional<size_t> Collapse(const Source& source, const std::vector<uint32_t>& current,
                                size_t targetTriangles, float relativeError,
                                std::vector<uint32_t>& simplified, float& stepError,
-                               const std::atomic<bool>* cancel) {
+                               const std::atomic<bool>* cancel, std::string& failure) {
   const size_t vertexCount = source.positions.size() / 3;
   auto collapse = [&](uint32_t* destination, float* error) {
     // (meshopt_simplifySloppy is 3x faster here but twice the error, and stalls near 20k.)
@@ -185,7 +186,7 @@ std::optional<size_t> Collapse(const Source& source, const std::vector<uint32_t>
   constexpr size_t kIndicesAt = 16;
   static_assert(sizeof(Answer) <= kIndicesAt);
   size_t indexCount = 0;
-  const bool answered = RunInChild(
+  const ChildOutcome outcome = RunInChild(
       kIndicesAt + current.size() * sizeof(uint32_t),
       [&](std::byte* shared) {
         Answer answer{};
@@ -201,9 +202,18 @@ std::optional<size_t> Collapse(const Source& source, const std::vector<uint32_t>
         std::memcpy(simplified.data(), shared + kIndicesAt, indexCount * sizeof(uint32_t));
       },
       *cancel);
-  if (answered) return indexCount;
-  if (cancel->load()) return std::nullopt;
-  return collapse(simplified.data(), &stepError);  // no child (or it died): here, to its end
+  switch (outcome) {
+    case ChildOutcome::kAnswered:
+      return indexCount;
+    case ChildOutcome::kNoChild:  // here, to its end
+      return collapse(simplified.data(), &stepError);
+    case ChildOutcome::kDied:  // likely out of memory: not tried again here
+      failure = "its edge collapse ended without an answer (out of memory?)";
+      return std::nullopt;
+    case ChildOutcome::kCancelled:
+      return std::nullopt;
+  }
+  return std::nullopt;
 }
 
 // How many distinct vertices the (position-joined) indices use.
@@ -266,9 +276,13 @@ DetailLevels BuildDetailLevels(const Scene& exact, const DetailBuildOptions& opt
     // Step 1: edge collapse within what error is left (stopped by a cancel).
     float stepError = 0.0F;
     const auto budget = static_cast<float>(options.maxRelativeError - relativeError);
+    std::string failure;
     const std::optional<size_t> collapsed =
-        Collapse(source, current, target, budget, simplified, stepError, options.cancel);
-    if (!collapsed) break;
+        Collapse(source, current, target, budget, simplified, stepError, options.cancel, failure);
+    if (!collapsed) {
+      if (result.levels.empty()) result.skippedBecause = failure;
+      break;
+    }
     const size_t indexCount = *collapsed;
     // Step 2: stop where the error budget (or the topology) stops the collapse.
     if (indexCount == 0 || indexCount > current.size() * 3 / 4 || cancelled()) break;

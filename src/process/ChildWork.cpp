@@ -2,6 +2,7 @@
 
 #include <signal.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,18 +48,39 @@ void Reap(pid_t child) {
   }
 }
 
+// The child's start: this process's signal handlers (the viewer's, which
+// restore the terminal), blocked signals and open files left behind, and
+// death with the parent. False when the parent is already gone.
+bool BecomeQuietChild(pid_t parent) {
+  for (int signalNumber = 1; signalNumber < NSIG; ++signalNumber) {
+    if (signalNumber != SIGKILL && signalNumber != SIGSTOP) signal(signalNumber, SIG_DFL);
+  }
+  sigset_t none;
+  sigemptyset(&none);
+  pthread_sigmask(SIG_SETMASK, &none, nullptr);
+  if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) return false;
+  close_range(0, ~0U, 0);
+  return true;
+}
+
 }  // namespace
 
-bool RunInChild(size_t sharedBytes, const std::function<void(std::byte* shared)>& work,
-                const std::function<void(const std::byte* shared)>& take,
-                const std::atomic<bool>& cancel) {
+ChildOutcome RunInChild(size_t sharedBytes, const std::function<void(std::byte* shared)>& work,
+                        const std::function<void(const std::byte* shared)>& take,
+                        const std::atomic<bool>& cancel) {
   SharedMapping mapping(kHeaderBytes + sharedBytes);
-  if (mapping.Data() == nullptr) return false;
+  if (mapping.Data() == nullptr) return ChildOutcome::kNoChild;
   auto* header = new (mapping.Data()) ChildHeader;
+  const pid_t parent = getpid();
   const pid_t child = fork();
-  if (child < 0) return false;
+  if (child < 0) return ChildOutcome::kNoChild;
   if (child == 0) {  // the child: the work, then out without this process's exit handlers
-    work(mapping.Data() + kHeaderBytes);
+    if (!BecomeQuietChild(parent)) _exit(1);
+    try {
+      work(mapping.Data() + kHeaderBytes);
+    } catch (...) {
+      _exit(1);
+    }
     header->done.store(1, std::memory_order_release);
     _exit(0);
   }
@@ -68,21 +90,21 @@ bool RunInChild(size_t sharedBytes, const std::function<void(std::byte* shared)>
     if (cancel.load(std::memory_order_relaxed)) {
       kill(child, SIGKILL);
       Reap(child);
-      return false;
+      return ChildOutcome::kCancelled;
     }
     int status = 0;
     const pid_t ended = waitpid(child, &status, WNOHANG);
     if (ended == child || (ended < 0 && errno == ECHILD)) {
       // Ended: its answer counts only if it got as far as writing it.
-      if (header->done.load(std::memory_order_acquire) == 0) return false;
+      if (header->done.load(std::memory_order_acquire) == 0) return ChildOutcome::kDied;
       take(mapping.Data() + kHeaderBytes);
-      return true;
+      return ChildOutcome::kAnswered;
     }
     std::this_thread::sleep_for(kCancelPoll);
   }
   Reap(child);
   take(mapping.Data() + kHeaderBytes);
-  return true;
+  return ChildOutcome::kAnswered;
 }
 
 }  // namespace termshade

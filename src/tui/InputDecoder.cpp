@@ -265,24 +265,26 @@ void InputDecoder::FeedString(int key) {
     BecomeAnswer();
   }
   if (key == kBell) {
-    Finish(ReplyEvent(ReplyFromOsc(body_)));
+    Finish(ReplyEvent(StringReply()));
     return;
   }
   if (key == kEscape) {
     state_ = State::kStringEnd;
     return;
   }
-  if (body_.size() >= kMaxStringBytes) {
-    Drop();
-    pending_.push_front(key);
-    return;
-  }
+  // Past the longest answer asked for: read to its end, of no use (never keys).
+  if (body_.size() > kMaxStringBytes) return;
   body_ += static_cast<char>(key);
+}
+
+TerminalReply InputDecoder::StringReply() const {
+  if (body_.size() > kMaxStringBytes) return TerminalReply{};
+  return sequence_[1] == ']' ? ReplyFromOsc(body_) : ReplyFromDcs(body_);
 }
 
 void InputDecoder::FeedStringEnd(int key) {
   if (key == '\\') {
-    Finish(ReplyEvent(sequence_[1] == ']' ? ReplyFromOsc(body_) : ReplyFromDcs(body_)));
+    Finish(ReplyEvent(StringReply()));
     return;
   }
   // ESC and something else: the string ends unfinished; both are read again.

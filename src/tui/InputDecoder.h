@@ -79,6 +79,8 @@ class InputDecoder {
   void FeedX10(int key);
   void FeedString(int key);
   void FeedStringEnd(int key);
+  /// The answer an OSC or DCS string gives (none past the longest asked for).
+  TerminalReply StringReply() const;
   void BecomeAnswer();
   void FinishCsi(int finalByte);
   void Finish(InputEvent event);

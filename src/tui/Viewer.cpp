@@ -345,9 +345,8 @@ class EventLoop {
         state_.WantsLevels() && !WantsHierarchy()) {
       const std::shared_ptr<const Scene>& scene = state_.SharedScene();
       // Levels beyond the memory budget are not built: the exact frames, said once.
-      const size_t heldBytes = scene->hierarchy.Get(*scene) ? EstimateRayBvhBytes(*scene) : 0;
       if (auto reason = ExtraOverBudget("level of detail", EstimateDetailBuildBytes(*scene), *scene,
-                                        heldBytes, BudgetBytes())) {
+                                        HeldExtraBytes(*scene), BudgetBytes())) {
         auto none = std::make_shared<DetailLevels>();
         none->skippedBecause = *reason;
         state_.SetLevels(scene, std::move(none));
@@ -360,6 +359,16 @@ class EventLoop {
   }
 
   size_t BudgetBytes() const { return LoadOptions(state_.Limits()).memoryBudgetBytes; }
+
+  // What the scene's optional structures already hold: its hierarchy and
+  // its levels of detail (each level a scene of its own).
+  size_t HeldExtraBytes(const Scene& scene) const {
+    size_t bytes = scene.hierarchy.Get(scene) ? EstimateRayBvhBytes(scene) : 0;
+    if (const DetailLevels* levels = state_.Levels()) {
+      for (const DetailLevel& level : levels->levels) bytes += EstimateSceneBytes(level.scene);
+    }
+    return bytes;
+  }
 
   // Whether the scene's hierarchy is still to be built: frames of this
   // size would cast rays through one, and none was tried for the scene.
@@ -391,8 +400,8 @@ class EventLoop {
     if (!hierarchyJob_ && !detailJob_ && MayStartBuild() && framesDrawn_ > 0 && WantsHierarchy()) {
       hierarchyTriedFor_ = scene;
       // Beyond the memory budget it is not built: the same frames, cast or drawn without it.
-      if (!ExtraOverBudget("the ray hierarchy", EstimateRayBvhBytes(*scene), *scene, 0,
-                           BudgetBytes())) {
+      if (!ExtraOverBudget("the ray hierarchy", EstimateRayBvhBytes(*scene), *scene,
+                           HeldExtraBytes(*scene), BudgetBytes())) {
         hierarchyJob_ = std::make_unique<HierarchyJob>(scene, BuildHierarchy);
       }
     }

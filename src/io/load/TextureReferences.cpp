@@ -1,5 +1,6 @@
 #include "io/load/TextureReferences.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@ bool IsInside(const std::string& path, const std::string& folder) {
 TextureWhere Locate(std::string name, const std::string& folder) {
   // Step 1: names that are not files in a folder.
   if (name.front() == '*') return TextureWhere::kEmbedded;
+  if (name.find('\0') != std::string::npos) return TextureWhere::kMissing;  // no such file name
   if (name.rfind("file:", 0) == 0 || name.rfind("data:", 0) == 0 ||
       name.find("://") != std::string::npos) {
     return TextureWhere::kUri;
@@ -31,9 +33,12 @@ TextureWhere Locate(std::string name, const std::string& folder) {
   const std::string resolved =
       std::filesystem::weakly_canonical(std::filesystem::path(folder) / name, error).string();
   if (error || !IsInside(resolved, folder)) return TextureWhere::kOutsideFolder;
+  // Not through a link swapped in since (it would tell of a file outside).
   struct stat status {};
-  return stat(resolved.c_str(), &status) == 0 && S_ISREG(status.st_mode) ? TextureWhere::kInFolder
-                                                                         : TextureWhere::kMissing;
+  return fstatat(AT_FDCWD, resolved.c_str(), &status, AT_SYMLINK_NOFOLLOW) == 0 &&
+                 S_ISREG(status.st_mode)
+             ? TextureWhere::kInFolder
+             : TextureWhere::kMissing;
 }
 
 }  // namespace
