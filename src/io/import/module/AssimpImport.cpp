@@ -13,6 +13,8 @@
 #include <new>
 #include <optional>
 #include <streambuf>
+#include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "geometry/WeldVertices.h"
@@ -142,6 +144,7 @@ std::string MaterialTexture(const aiScene& scene, unsigned materialIndex) {
 Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
   Mesh out;
   std::vector<uint32_t> corners;
+  std::unordered_set<std::string> texturesSeen;
   std::vector<std::optional<Rgb>> colors;
   bool anyColor = false;
   for (const PlacedMesh& item : placed) {
@@ -154,9 +157,10 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
     }
     const std::optional<Rgb> materialColor = FileMaterialColor(scene, mesh.mMaterialIndex);
     const bool vertexColors = mesh.HasVertexColors(0);
+    // Each texture once, in first-use order (a set: a hostile file may place
+    // 100,000 meshes over thousands of materials).
     if (std::string texture = MaterialTexture(scene, mesh.mMaterialIndex);
-        !texture.empty() && out.textures.size() < kMaxTextures &&
-        std::find(out.textures.begin(), out.textures.end(), texture) == out.textures.end()) {
+        !texture.empty() && out.textures.size() < kMaxTextures && texturesSeen.insert(texture).second) {
       out.textures.push_back(std::move(texture));
     }
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
