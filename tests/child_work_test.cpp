@@ -4,8 +4,8 @@
 
 #include <atomic>
 #include <csignal>
-#include <stdexcept>
 #include <cstring>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -68,10 +68,10 @@ TEST(ChildWork, AChildThatDiesGivesNoAnswer) {
     (void)!write(STDERR_FILENO, text, sizeof text - 1);
   };
   sigaction(SIGUSR1, &loud, &previous);
-  EXPECT_EQ(RunInChild(
-                8, [](std::byte*) { raise(SIGUSR1); }, [&](const std::byte*) { took = true; },
-                cancel),
-            ChildOutcome::kDied);  // SIGUSR1's default ends it, the handler is gone
+  EXPECT_EQ(
+      RunInChild(
+          8, [](std::byte*) { raise(SIGUSR1); }, [&](const std::byte*) { took = true; }, cancel),
+      ChildOutcome::kDied);  // SIGUSR1's default ends it, the handler is gone
   sigaction(SIGUSR1, &previous, nullptr);
   EXPECT_FALSE(took);
 }

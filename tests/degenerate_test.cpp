@@ -106,10 +106,10 @@ TEST(Degenerate, RepeatedTrianglesWithTheirOwnVerticesAreDrawnOnce) {
     const int v = 3 * i + 1;
     text += std::to_string(v) + " 0 0 0\n" + std::to_string(v + 1) + " 1 0 0\n" +
             std::to_string(v + 2) + " 0 1 0\n";
-    faces += i == 50 ? std::to_string(v) + " " + std::to_string(v + 2) + " " +
-                           std::to_string(v + 1) + ".\n"
-                     : std::to_string(v + 1) + " " + std::to_string(v + 2) + " " +
-                           std::to_string(v) + ".\n";
+    faces +=
+        i == 50
+            ? std::to_string(v) + " " + std::to_string(v + 2) + " " + std::to_string(v + 1) + ".\n"
+            : std::to_string(v + 1) + " " + std::to_string(v + 2) + " " + std::to_string(v) + ".\n";
   }
   const Scene scene = FromText(text + faces);
   EXPECT_EQ(scene.FaceCount(), 100U);

@@ -270,7 +270,8 @@ TEST(ClusteredLevel, ExactVerticesFewerTrianglesFacingOut) {
 double SurfaceArea(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices) {
   double area = 0.0;
   for (size_t i = 0; i + 2 < indices.size(); i += 3) {
-    const Vec3 a = positions[indices[i]], b = positions[indices[i + 1]], c = positions[indices[i + 2]];
+    const Vec3 a = positions[indices[i]], b = positions[indices[i + 1]],
+               c = positions[indices[i + 2]];
     area += 0.5 * Length(Cross(b - a, c - a));
   }
   return area;

@@ -90,8 +90,9 @@ const std::vector<CommandExamples>& AllExamples() {
         {"termshade render part.stl --expect part.snap",
          "snapshot test: compare with the golden (write it once with --update)"}}},
       {"info",
-       {{"termshade info car.obj", "reader, counts, bounds, up axis, open edges, colours, load "
-                                   "time and peak memory"},
+       {{"termshade info car.obj",
+         "reader, counts, bounds, up axis, open edges, colours, load "
+         "time and peak memory"},
         {"termshade info --format json parts/*.stl", "one JSON object a model, for scripts"}}},
       {"generate",
        {{"termshade generate sphere_cone", "the demo scene as .dat to stdout"},

@@ -303,8 +303,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
       // Levels beyond the budget are left out: the exact frames, said once.
       if (const auto reason = ExtraOverBudget("level of detail", EstimateDetailBuildBytes(scene),
                                               scene, 0, budgetBytes)) {
-        std::cerr << "termshade render: note: " << SanitizeForTerminal(modelPath) << ": "
-                  << *reason << "\n";
+        std::cerr << "termshade render: note: " << SanitizeForTerminal(modelPath) << ": " << *reason
+                  << "\n";
       } else {
         levels.emplace(BuildDetailLevels(scene));
       }

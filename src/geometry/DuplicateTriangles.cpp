@@ -105,7 +105,9 @@ size_t DropRepeatedSceneTriangles(Scene& scene, size_t faceCount) {
     // triangle its own corners, as a .dat may be): compared by position there.
     if (2 * scene.verticesWorld.size() < 5 * triangleCount) return 0;
     joined = PositionJoinedCorners(scene);
-    if (triangleCount <= kRepeatCheckTrianglesPerVertex * DistinctCount(joined, scene.verticesWorld.size())) return 0;
+    if (triangleCount <=
+        kRepeatCheckTrianglesPerVertex * DistinctCount(joined, scene.verticesWorld.size()))
+      return 0;
     keys = joined.data();
   }
   size_t repeated = 0;

@@ -12,7 +12,8 @@
 
 namespace termshade {
 
-/// Most textures a mesh names, and most bytes in one's name (the import's answer is refused past them).
+/// Most textures a mesh names, and most bytes in one's name (the import's answer is refused past
+/// them).
 inline constexpr size_t kMaxTextures = 4096;
 inline constexpr size_t kMaxTextureNameBytes = 4096;
 

@@ -449,7 +449,7 @@ bool RayBvh::BuiltFor(const Scene& scene) const {
 size_t EstimateRayBvhBytes(const Scene& scene) {
   constexpr size_t kBytesPerTriangle = 72;
   return scene.triangles.size() < RayBvh::kMaxTriangles ? kBytesPerTriangle * scene.triangles.size()
-                                                       : 0;
+                                                        : 0;
 }
 
 RayBvh BuildRayBvh(const Scene& scene, const std::atomic<bool>* cancel, int threads) {

@@ -11,8 +11,8 @@
 #include "geometry/Mat4.h"
 #include "geometry/Mesh.h"
 #include "geometry/SceneEdges.h"
-#include "geometry/SceneSource.h"
 #include "geometry/SceneHierarchy.h"
+#include "geometry/SceneSource.h"
 #include "geometry/UpAxis.h"
 
 namespace termshade {

@@ -49,7 +49,8 @@ bool ReadTextures(WireReader& reader, std::vector<std::string>& textures) {
   for (std::string& texture : textures) {
     if (!reader.String(texture, kMaxTextureNameBytes)) return false;
     if (texture.empty()) return reader.Refuse("an empty texture name");
-    if (texture.find('\0') != std::string::npos) return reader.Refuse("a texture name with a NUL byte");
+    if (texture.find('\0') != std::string::npos)
+      return reader.Refuse("a texture name with a NUL byte");
   }
   return true;
 }

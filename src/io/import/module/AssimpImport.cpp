@@ -160,7 +160,8 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
     // Each texture once, in first-use order (a set: a hostile file may place
     // 100,000 meshes over thousands of materials).
     if (std::string texture = MaterialTexture(scene, mesh.mMaterialIndex);
-        !texture.empty() && out.textures.size() < kMaxTextures && texturesSeen.insert(texture).second) {
+        !texture.empty() && out.textures.size() < kMaxTextures &&
+        texturesSeen.insert(texture).second) {
       out.textures.push_back(std::move(texture));
     }
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
