@@ -240,6 +240,41 @@ TEST(ImportWire, ACountBeyondTheLimitIsRefusedBeforeAllocating) {
   EXPECT_EQ(reader.Problem(), "an array longer than allowed");
 }
 
+TEST(ImportWire, TextureNamesBeyondTheLimitsAreRefused) {
+  const auto refusal = [](const std::vector<std::string>& textures) {
+    Mesh mesh;
+    mesh.verticesFile = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const uint32_t face[] = {0, 1, 2};
+    mesh.AddFace(face);
+    mesh.textures = textures;
+    std::string wire;
+    const WireSink sink = [&](const void* from, size_t size) {
+      wire.append(static_cast<const char*>(from), size);
+      return true;
+    };
+    EXPECT_TRUE(WriteResultFrame(ModuleStatus::kDone, "", mesh, sink));
+    size_t at = 1;
+    WireReader reader(
+        [&](void* to, size_t size) {
+          if (at + size > wire.size()) return false;
+          std::memcpy(to, wire.data() + at, size);
+          at += size;
+          return true;
+        },
+        wire.size());
+    ModuleStatus status{};
+    std::string text;
+    Loaded<Mesh> read = LoadError{};
+    return ReadResultFrame(reader, status, text, read) ? std::string() : reader.Problem();
+  };
+  EXPECT_EQ(refusal({"wood.png"}), "");
+  EXPECT_EQ(refusal({std::string("a.png\0/../../x", 14)}), "a texture name with a NUL byte");
+  EXPECT_EQ(refusal({""}), "an empty texture name");
+  EXPECT_EQ(refusal({std::string(kMaxTextureNameBytes + 1, 'x')}), "a text longer than allowed");
+  EXPECT_EQ(refusal(std::vector<std::string>(kMaxTextures + 1, "t.png")),
+            "more texture names than allowed");
+}
+
 TEST(ImportWire, MeshesThatNoLoaderMakesAreNamed) {
   Mesh mesh;
   mesh.verticesFile = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
