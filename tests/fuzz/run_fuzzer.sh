@@ -13,11 +13,14 @@ seconds=${1:-60}
 datSeconds=$((seconds / 4))
 readerSeconds=$((seconds / 4))
 wireSeconds=$((seconds / 4))
-inputSeconds=$((seconds / 10))
-optionSeconds=$((seconds / 20))
+inputSeconds=$((seconds / 10 > 0 ? seconds / 10 : 1))
+optionSeconds=$((seconds / 20 > 0 ? seconds / 20 : 1))  # 0 would mean no limit
 modelSeconds=$((seconds - datSeconds - readerSeconds - wireSeconds - inputSeconds - optionSeconds))
+fuzzers=(dat_fuzzer model_fuzzer reader_fuzzer wire_fuzzer input_fuzzer option_fuzzer)
 cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz
+# Build exactly the fuzzers run below (a fuzzer missing from the preset's
+# target list once failed CI only at its run).
+cmake --build --preset fuzz --target "${fuzzers[@]}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir "$work/dat" "$work/model" "$work/reader" "$work/wire" "$work/input" "$work/option"
