@@ -5,13 +5,14 @@
 # sudo only when not root.
 #
 # Usage: scripts/install-deps.sh [GROUP...]      (default: runtime)
-#   runtime  build and run the viewer: compiler, CMake, Ninja, CLI11, Assimp, meshoptimizer, ncurses
+#   runtime  build and run the viewer: compiler, CMake, Ninja, CLI11, Assimp, meshoptimizer, ncurses, stb_image
 #   test     runtime + what `cmake --workflow --preset test` needs
 #   ci       test + the sanitizer and fuzzer builds' extras (what .ci/run runs)
 #   --list   print the packages of the groups instead of installing them
 set -euo pipefail
 
-runtime=(cmake ninja-build g++ libncurses-dev libcli11-dev libassimp-dev libmeshoptimizer-dev)
+runtime=(cmake ninja-build g++ libncurses-dev libcli11-dev libassimp-dev libmeshoptimizer-dev
+         libstb-dev)
 # GoogleTest, Google Benchmark, JSON for the dump tests; tmux and strace drive
 # the viewer; Assimp's own model corpus; man-db renders the installed man page;
 # zsh and fish check their completion scripts; rsvg-convert and Pillow read

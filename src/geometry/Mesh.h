@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/Rgb.h"
+#include "geometry/TextureImage.h"
 #include "geometry/UpAxis.h"
 #include "geometry/Vec3.h"
 
@@ -16,6 +17,8 @@ namespace termshade {
 /// them).
 inline constexpr size_t kMaxTextures = 4096;
 inline constexpr size_t kMaxTextureNameBytes = 4096;
+/// Mesh::faceTextures of a face without a texture.
+inline constexpr uint32_t kNoTexture = UINT32_MAX;
 
 /// A polygon model as read from a file: vertices in file space, faces as
 /// counter-clockwise (seen from outside) lists of 0-based vertex indices.
@@ -34,8 +37,16 @@ struct Mesh {
   std::vector<Rgb> faceColors;
   /// The base-colour textures the file's materials name, each once, as the
   /// file writes them (a path relative to the model's folder, or "*N" for
-  /// the file's Nth embedded image); reported, not drawn yet.
+  /// the file's Nth embedded image).
   std::vector<std::string> textures;
+  /// Parallel to textures: the decoded images (or why one is not), when the
+  /// loader decodes them; empty otherwise.
+  std::vector<TextureImage> textureImages;
+  /// Per face: its index into textures, or kNoTexture; empty when no face has one.
+  std::vector<uint32_t> faceTextures;
+  /// Parallel to faceCorners: each corner's texture coordinates (u right, v
+  /// up, 0..1 across the image, repeating); empty when faceTextures is.
+  std::vector<std::array<float, 2>> cornerUvs;
   /// The file's up axis: what the file declares, else its format's convention (SPEC 10).
   UpAxis upAxisFile = UpAxis::kPlusZ;
   /// Who read the file and as what ("termshade OBJ reader", "Assimp (import

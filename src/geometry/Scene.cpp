@@ -349,6 +349,7 @@ Mesh Scene::SourceMesh() const {
     for (size_t i = 0; i < face.size(); ++i) hidden.push_back(EdgeHidden(f, i) ? 1 : 0);
     mesh.AddFace(corners, hidden);
   }
+  GiveBackTextures(textures, mesh);
   return mesh;
 }
 
@@ -370,6 +371,7 @@ std::optional<Scene> PrepareSceneSteps(Mesh mesh, std::optional<UpAxis> upOverri
   scene.source.upAxisFile = mesh.upAxisFile;
   scene.source.faceColors = std::move(mesh.faceColors);
   scene.source.segments = std::move(mesh.segments);
+  scene.textures = TakeSceneTextures(mesh);
   FaceList faces = TakeFaces(mesh);
 
   // Step 1: world space is file space turned up (+z), centered on the bounding

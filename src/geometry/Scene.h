@@ -13,6 +13,7 @@
 #include "geometry/SceneEdges.h"
 #include "geometry/SceneHierarchy.h"
 #include "geometry/SceneSource.h"
+#include "geometry/SceneTextures.h"
 #include "geometry/UpAxis.h"
 
 namespace termshade {
@@ -53,6 +54,7 @@ struct Scene {
   /// The triangles' hierarchy for RayCastStage, once a front end has
   /// built and attached it (big scenes drawn many times).
   SceneHierarchy hierarchy;
+  SceneTextures textures;  ///< the faces' base-colour textures, when the file gives decoded ones
   SceneSource source;  ///< the rest of the model (closed parts outward), where the arrays lack it
   double diagonalModelUnits = 0.0;  ///< bounding-box diagonal
   double radiusModelUnits = 0.0;  ///< of the smallest sphere about the origin holding every vertex

@@ -18,7 +18,15 @@ void CellBuffer::Resize(int widthCells, int heightCells) {
   backFaceNumbers_.resize(count);
   backLevels_.resize(count);
   backIntensities_.resize(count);
+  foreAlbedos_.clear();
+  backAlbedos_.clear();
   Clear();
+}
+
+void CellBuffer::UseAlbedos() {
+  const size_t count = static_cast<size_t>(widthCells_) * heightCells_;
+  foreAlbedos_.assign(count, 0U);
+  backAlbedos_.assign(count, 0U);
 }
 
 void CellBuffer::ResizeFacesOnly(int widthCells, int heightCells) {
@@ -32,6 +40,8 @@ void CellBuffer::ResizeFacesOnly(int widthCells, int heightCells) {
   backFaceNumbers_.clear();
   backLevels_.clear();
   backIntensities_.clear();
+  foreAlbedos_.clear();
+  backAlbedos_.clear();
   Clear();
 }
 
@@ -44,6 +54,7 @@ void CellBuffer::Clear() {
   std::fill(backFaceNumbers_.begin(), backFaceNumbers_.end(), 0U);
   std::fill(backLevels_.begin(), backLevels_.end(), int16_t{-1});
   std::fill(backIntensities_.begin(), backIntensities_.end(), uint8_t{0});
+  DropAlbedos();
 }
 
 std::string CellBuffer::RowText(int row) const {

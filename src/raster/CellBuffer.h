@@ -57,6 +57,26 @@ class CellBuffer {
   const std::vector<int16_t>& BackLevels() const { return backLevels_; }
   const std::vector<uint8_t>& BackIntensities() const { return backIntensities_; }
 
+  /// A cell's texture colour (albedo) for its foreground and its background:
+  /// 0 when the face colour serves, else PackAlbedo's value (shade/CellColour.h). Kept only once a
+  /// frame has textured faces (UseAlbedos); every cell 0 otherwise.
+  uint32_t ForeAlbedo(int col, int row) const {
+    return foreAlbedos_.empty() ? 0 : foreAlbedos_[Index(col, row)];
+  }
+  uint32_t BackAlbedo(int col, int row) const {
+    return backAlbedos_.empty() ? 0 : backAlbedos_[Index(col, row)];
+  }
+  /// Makes room for the albedos (all 0) until the next Resize.
+  void UseAlbedos();
+  /// Back to face colours alone.
+  void DropAlbedos() {
+    foreAlbedos_.clear();
+    backAlbedos_.clear();
+  }
+  bool HasAlbedos() const { return !foreAlbedos_.empty(); }
+  std::vector<uint32_t>& ForeAlbedos() { return foreAlbedos_; }
+  std::vector<uint32_t>& BackAlbedos() { return backAlbedos_; }
+
   /// Row r as UTF-8 text, exactly WidthCells() characters.
   std::string RowText(int row) const;
 
@@ -71,6 +91,8 @@ class CellBuffer {
   std::vector<uint32_t> backFaceNumbers_;
   std::vector<int16_t> backLevels_;
   std::vector<uint8_t> backIntensities_;
+  std::vector<uint32_t> foreAlbedos_;
+  std::vector<uint32_t> backAlbedos_;
 };
 
 }  // namespace termshade

@@ -103,6 +103,9 @@ struct FramePlan {
   int16_t lineLevel = 0;                    ///< kEdges: the ramp level lines are drawn at
   ShadePlan shading;
   GlyphPlan glyphs;  ///< several samples a cell
+  /// The cells' colours from the faces' textures (TextureStage): colours are
+  /// shown, textures asked for, the scene has some, and faces are drawn.
+  bool textures = false;
 };
 
 /// The glyph stage's settings from the options (PlanFrame's; tests build them so too).

@@ -76,6 +76,10 @@ struct RenderOptions {
   /// two-colour modes split each cell's samples by shade; otherwise their glyph
   /// is the coverage pattern and the fg the covered samples' mean shade.
   bool twoColour = false;
+  /// Faces with a decoded base-colour texture take their colours from it,
+  /// sample by sample (TextureStage), where colours are shown (twoColour);
+  /// false: their face colour.
+  bool textures = true;
   /// False: the depth buffer need not hold the frame's depth afterwards (only
   /// the json dump reads it), so methods that need no depth test skip it.
   bool keepDepth = true;

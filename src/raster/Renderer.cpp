@@ -35,6 +35,13 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   stats.facesVisible = ShadeFaces(scene, plan, surfaces.cells);
   // Step 4: several samples a cell: the glyph of each cell from its samples.
   if (plan.target != SurfaceTarget::kCells) ComposeGlyphs(plan, depth, cells);
+  // Step 5: textured faces: each cell's colours from the texels its samples see.
+  if (plan.textures) {
+    textureStage_.Apply(scene, plan.view,
+                        plan.target == SurfaceTarget::kCells ? nullptr : &sampleFrame_, cells);
+  } else {
+    cells.DropAlbedos();
+  }
   return stats;
 }
 

@@ -16,6 +16,7 @@
 #include "raster/SampleFrame.h"
 #include "raster/ShadeStage.h"
 #include "raster/SurfacePassChoice.h"
+#include "raster/TextureStage.h"
 #include "raster/WorkerPool.h"
 
 namespace termshade {
@@ -71,6 +72,7 @@ class Renderer {
   RayCastStage rayCastStage_;
   ShadeStage shadeStage_;
   GlyphStage glyphStage_;
+  TextureStage textureStage_;
   std::unique_ptr<WorkerPool> pool_;
   WorkerPool* framePool_ = nullptr;  ///< this frame's threads for the cluster pass and shading
   SurfacePassChoice passChoice_;  ///< rays or clusters, by their times (HierarchyUse::kWhenFaster)

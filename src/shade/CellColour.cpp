@@ -6,6 +6,7 @@
 #include <cstring>
 #include <vector>
 
+#include "geometry/SrgbCoding.h"
 #include "shade/Palette16.h"
 
 namespace termshade {
@@ -94,6 +95,16 @@ Srgb8 ShadedFaceColour(Rgb faceLinear, double intensity, Background background) 
   return {ToByte(EncodeSrgb(c.r)), ToByte(EncodeSrgb(c.g)), ToByte(EncodeSrgb(c.b))};
 }
 
+Srgb8 EncodeSrgb8(Rgb linear) {
+  return {ToByte(EncodeSrgb(linear.r)), ToByte(EncodeSrgb(linear.g)), ToByte(EncodeSrgb(linear.b))};
+}
+
+Rgb UnpackAlbedo(uint32_t packed) {
+  return Rgb{LinearOfSrgb8(static_cast<uint8_t>(packed >> 16)),
+             LinearOfSrgb8(static_cast<uint8_t>(packed >> 8)),
+             LinearOfSrgb8(static_cast<uint8_t>(packed))};
+}
+
 Srgb8 Palette256Colour(int index) {
   if (index >= 232) {
     const auto grey = static_cast<uint8_t>(8 + 10 * (std::clamp(index, 232, 255) - 232));
@@ -146,14 +157,16 @@ double ContrastRatio(Srgb8 a, Srgb8 b) {
   return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
 }
 
-TermColour CellColourMap::ForFace(uint32_t faceNumber, int level) {
+TermColour CellColourMap::ForFace(uint32_t faceNumber, int level, uint32_t albedo) {
   const bool known = faceNumber >= 1 && faceNumber <= faceColours_.size();
-  const Rgb face = known ? faceColours_[faceNumber - 1] : kDefaultFaceColour;
+  const Rgb face = albedo != 0 ? UnpackAlbedo(albedo)
+                               : (known ? faceColours_[faceNumber - 1] : kDefaultFaceColour);
   Key key{};
   std::memcpy(&key.r, &face.r, sizeof(float));
   std::memcpy(&key.g, &face.g, sizeof(float));
   std::memcpy(&key.b, &face.b, sizeof(float));
   key.level = level;
+  if (cache_.size() >= kMaxCachedColours) cache_.clear();  // textures: many colours a frame
   const auto [at, inserted] = cache_.try_emplace(key);
   if (inserted)
     at->second = CellColour(face, IntensityForLevel(level, levelCount_), mode_, background_);

@@ -29,6 +29,16 @@ struct TermColour {
   bool operator==(const TermColour&) const = default;
 };
 
+/// An sRGB albedo (a texture's colour at a cell) packed as a cell keeps it:
+/// 0x01RRGGBB, never 0 (0 stands for "the face's colour").
+inline uint32_t PackAlbedo(Srgb8 colour) {
+  return 0x01000000U | (uint32_t{colour.r} << 16) | (uint32_t{colour.g} << 8) | colour.b;
+}
+/// Linear light to 8-bit sRGB, each component clamped to [0, 1].
+Srgb8 EncodeSrgb8(Rgb linear);
+/// The linear colour of a packed albedo.
+Rgb UnpackAlbedo(uint32_t packed);
+
 /// The colour of faces whose file gives none (SPEC 10): a neutral light grey.
 constexpr Rgb kDefaultFaceColour{0.8F, 0.8F, 0.8F};
 
@@ -77,7 +87,8 @@ class CellColourMap {
   CellColourMap(std::span<const Rgb> faceColours, int levelCount, ColourMode mode,
                 Background background = Background::kDark)
       : faceColours_(faceColours), levelCount_(levelCount), mode_(mode), background_(background) {}
-  TermColour ForFace(uint32_t faceNumber, int level);
+  /// With a nonzero albedo (PackAlbedo) the cell's texture colour replaces the face's.
+  TermColour ForFace(uint32_t faceNumber, int level, uint32_t albedo = 0);
 
  private:
   // A face colour's exact bits and a level.
@@ -93,6 +104,7 @@ class CellColourMap {
   int levelCount_;
   ColourMode mode_;
   Background background_;
+  static constexpr size_t kMaxCachedColours = size_t{1} << 16;
   std::unordered_map<Key, TermColour, KeyHash> cache_;
 };
 

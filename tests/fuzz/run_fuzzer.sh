@@ -51,7 +51,9 @@ corners = [(c,) for f in faces for c in f]
 mesh = (text(b"seed.off") + b"\x04" + array("<3d", vertices) + array("<I", corners) +
         array("<I", [(3 * i,) for i in range(5)]) +
         array("<B", [(1 if i == 1 else 0,) for i in range(12)]) + array("<2I", [(0, 3)]) +
-        array("<3f", [(0.5, 0.25, 1.0)] * 4) + struct.pack("<Q", 1) + text(b"tex.png"))
+        array("<3f", [(0.5, 0.25, 1.0)] * 4) + struct.pack("<Q", 1) + text(b"tex.png") +
+        struct.pack("<Q", 1) + struct.pack("<II", 1, 1) + array("<3B", [(255, 200, 0)]) + text(b"") +
+        array("<I", [(0,), (0,), (0,), (0,)]) + array("<2f", [(0.5, 0.5)] * 12))
 progress = b"P" + struct.pack("<d", 0.5)
 result = b"R" + struct.pack("<i", 0) + text(b"") + b"\x01" + mesh
 error = b"R" + struct.pack("<i", 0) + text(b"") + b"\x00" + text(b"seed.off") + struct.pack("<ii", 3, 7) + text(b"a message")

@@ -32,12 +32,24 @@ bool PutStrings(const std::vector<std::string>& texts, const WireSink& sink) {
   return true;
 }
 
+bool PutTextureImages(const std::vector<TextureImage>& images, const WireSink& sink) {
+  if (!PutValue<uint64_t>(images.size(), sink)) return false;
+  for (const TextureImage& image : images) {
+    if (!PutValue(image.widthTexels, sink) || !PutValue(image.heightTexels, sink) ||
+        !PutArray(image.srgbTexels, sink) || !PutString(image.problem, sink)) {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool PutMesh(const Mesh& mesh, const WireSink& sink) {
   return PutString(mesh.name, sink) && PutValue(static_cast<uint8_t>(mesh.upAxisFile), sink) &&
          PutArray(mesh.verticesFile, sink) && PutArray(mesh.faceCorners, sink) &&
          PutArray(mesh.faceStarts, sink) && PutArray(mesh.edgeHidden, sink) &&
          PutArray(mesh.segments, sink) && PutArray(mesh.faceColors, sink) &&
-         PutStrings(mesh.textures, sink);
+         PutStrings(mesh.textures, sink) && PutTextureImages(mesh.textureImages, sink) &&
+         PutArray(mesh.faceTextures, sink) && PutArray(mesh.cornerUvs, sink);
 }
 
 // The texture names: at most kMaxTextures, each 1 to kMaxTextureNameBytes bytes.
@@ -55,6 +67,28 @@ bool ReadTextures(WireReader& reader, std::vector<std::string>& textures) {
   return true;
 }
 
+// The decoded images: none, or one a texture name; each at most
+// kMaxTextureSideTexels a side, 3 bytes a texel.
+bool ReadTextureImages(WireReader& reader, size_t textureCount, std::vector<TextureImage>& images) {
+  uint64_t count = 0;
+  if (!reader.U64(count)) return false;
+  if (count != 0 && count != textureCount) return reader.Refuse("texture images not one a name");
+  images.assign(static_cast<size_t>(count), TextureImage{});
+  for (TextureImage& image : images) {
+    if (!reader.U32(image.widthTexels) || !reader.U32(image.heightTexels)) return false;
+    if (image.widthTexels > kMaxTextureSideTexels || image.heightTexels > kMaxTextureSideTexels) {
+      return reader.Refuse("a texture image larger than allowed");
+    }
+    if (!reader.Array(image.srgbTexels) || !reader.String(image.problem, kMaxTextBytes)) {
+      return false;
+    }
+    if (image.srgbTexels.size() != size_t{image.widthTexels} * image.heightTexels * 3) {
+      return reader.Refuse("a texture image whose texels do not fill it");
+    }
+  }
+  return true;
+}
+
 bool ReadMesh(WireReader& reader, Mesh& mesh) {
   uint8_t up = 0;
   if (!reader.String(mesh.name, kMaxTextBytes) || !reader.U8(up)) return false;
@@ -63,7 +97,9 @@ bool ReadMesh(WireReader& reader, Mesh& mesh) {
   if (!reader.Array(mesh.verticesFile) || !reader.Array(mesh.faceCorners) ||
       !reader.Array(mesh.faceStarts) || !reader.Array(mesh.edgeHidden) ||
       !reader.Array(mesh.segments) || !reader.Array(mesh.faceColors) ||
-      !ReadTextures(reader, mesh.textures)) {
+      !ReadTextures(reader, mesh.textures) ||
+      !ReadTextureImages(reader, mesh.textures.size(), mesh.textureImages) ||
+      !reader.Array(mesh.faceTextures) || !reader.Array(mesh.cornerUvs)) {
     return false;
   }
   const std::string problem = MeshWireProblem(mesh);
@@ -181,6 +217,15 @@ std::string MeshWireProblem(const Mesh& mesh) {
   if (mesh.edgeHidden.size() != mesh.faceCorners.size()) return "edge flags not one a corner";
   if (!mesh.faceColors.empty() && mesh.faceColors.size() != mesh.FaceCount()) {
     return "face colours not one a face";
+  }
+  if (!mesh.faceTextures.empty() && mesh.faceTextures.size() != mesh.FaceCount()) {
+    return "face textures not one a face";
+  }
+  for (const uint32_t texture : mesh.faceTextures) {
+    if (texture != kNoTexture && texture >= mesh.textures.size()) return "a face texture past the names";
+  }
+  if (mesh.cornerUvs.size() != (mesh.faceTextures.empty() ? 0 : mesh.faceCorners.size())) {
+    return "texture coordinates not one a corner of a textured mesh";
   }
   return "";
 }

@@ -19,7 +19,7 @@ namespace termshade {
 // byte order: both ends come from one build (the request carries its stamp).
 
 /// The first bytes of a request (the last is the format's version).
-inline constexpr std::string_view kImportRequestMagic{"TSIMPRQ2", 8};
+inline constexpr std::string_view kImportRequestMagic{"TSIMPRQ3", 8};
 
 /// One import for the helper.
 struct ImportRequest {

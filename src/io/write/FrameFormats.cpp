@@ -168,14 +168,15 @@ void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, 
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const int level = cells.Level(col, row);
       if (level >= 0 && mode != ColourMode::kNone) {  // a blank cell keeps the colour it has
-        const TermColour wanted = colours.ForFace(cells.FaceNumber(col, row), level);
+        const TermColour wanted = colours.ForFace(cells.FaceNumber(col, row), level, cells.ForeAlbedo(col, row));
         if (!(wanted == current)) AppendForegroundSgr(wanted, out);
         current = wanted;
       }
       // Two-colour glyph modes give a background face; others keep the terminal's.
       const int backLevel = cells.BackLevel(col, row);
       const TermColour wantedBack = backLevel >= 0 && mode != ColourMode::kNone
-                                        ? colours.ForFace(cells.BackFaceNumber(col, row), backLevel)
+                                        ? colours.ForFace(cells.BackFaceNumber(col, row), backLevel,
+                                                          cells.BackAlbedo(col, row))
                                         : TermColour{};
       if (!(wantedBack == currentBack)) AppendBackgroundSgr(wantedBack, out);
       currentBack = wantedBack;

@@ -14,11 +14,12 @@
 #include <optional>
 #include <streambuf>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "geometry/WeldVertices.h"
 #include "io/import/module/ConfinedIOSystem.h"
+#include "io/import/module/TextureDecode.h"
 #include "io/read/LoadBudget.h"
 
 namespace termshade {
@@ -139,14 +140,39 @@ std::string MaterialTexture(const aiScene& scene, unsigned materialIndex) {
   return {};
 }
 
+// The texture index of a placed mesh's material (kNoTexture: none, or past
+// kMaxTextures), each name listed once in first-use order (a map: a hostile
+// file may place 100,000 meshes over thousands of materials).
+uint32_t TextureIndex(const aiScene& scene, const aiMesh& mesh,
+                      std::unordered_map<std::string, uint32_t>& indexOf, Mesh& out) {
+  std::string texture = MaterialTexture(scene, mesh.mMaterialIndex);
+  if (texture.empty()) return kNoTexture;
+  if (const auto at = indexOf.find(texture); at != indexOf.end()) return at->second;
+  if (out.textures.size() >= kMaxTextures) return kNoTexture;
+  const auto index = static_cast<uint32_t>(out.textures.size());
+  indexOf.emplace(texture, index);
+  out.textures.push_back(std::move(texture));
+  return index;
+}
+
+// The texture coordinates of a corner (channel 0; none: the origin).
+std::array<float, 2> CornerUv(const aiMesh& mesh, unsigned vertex) {
+  if (!mesh.HasTextureCoords(0)) return {0.0F, 0.0F};
+  const aiVector3D& uv = mesh.mTextureCoords[0][vertex];
+  return {uv.x, uv.y};
+}
+
 // Builds our mesh: polygons kept, two-corner faces as segments, then vertices
-// welded by exact position (importers such as OBJ's give every corner its own vertex).
+// welded by exact position (importers such as OBJ's give every corner its own
+// vertex; texture coordinates stay a corner's own).
 Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
   Mesh out;
   std::vector<uint32_t> corners;
-  std::unordered_set<std::string> texturesSeen;
+  std::unordered_map<std::string, uint32_t> textureIndexOf;
   std::vector<std::optional<Rgb>> colors;
-  bool anyColor = false;
+  std::vector<uint32_t> faceTextures;
+  std::vector<std::array<float, 2>> cornerUvs;
+  bool anyColor = false, anyTexture = false;
   for (const PlacedMesh& item : placed) {
     const aiMesh& mesh = *item.mesh;
     if (mesh.mVertices == nullptr || mesh.mFaces == nullptr) continue;
@@ -155,15 +181,14 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
       const aiVector3D p = item.transform * mesh.mVertices[v];
       out.verticesFile.push_back({p.x, p.y, p.z});
     }
-    const std::optional<Rgb> materialColor = FileMaterialColor(scene, mesh.mMaterialIndex);
     const bool vertexColors = mesh.HasVertexColors(0);
-    // Each texture once, in first-use order (a set: a hostile file may place
-    // 100,000 meshes over thousands of materials).
-    if (std::string texture = MaterialTexture(scene, mesh.mMaterialIndex);
-        !texture.empty() && out.textures.size() < kMaxTextures &&
-        texturesSeen.insert(texture).second) {
-      out.textures.push_back(std::move(texture));
-    }
+    // A texture is drawn only where the corners have coordinates into it.
+    const uint32_t texture = TextureIndex(scene, mesh, textureIndexOf, out);
+    const bool textured = texture != kNoTexture && mesh.HasTextureCoords(0);
+    anyTexture = anyTexture || textured;
+    // A textured face's colour multiplies its texture: white when the file gives none.
+    std::optional<Rgb> materialColor = FileMaterialColor(scene, mesh.mMaterialIndex);
+    if (textured && !materialColor) materialColor = Rgb{1.0F, 1.0F, 1.0F};
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mIndices == nullptr) continue;
@@ -176,6 +201,10 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
         std::optional<Rgb> color = vertexColors ? MeanVertexColor(mesh, face) : materialColor;
         anyColor = anyColor || color.has_value();
         colors.push_back(color);
+        faceTextures.push_back(textured ? texture : kNoTexture);
+        for (unsigned i = 0; i < face.mNumIndices; ++i) {
+          cornerUvs.push_back(CornerUv(mesh, face.mIndices[i]));
+        }
       } else if (corners.size() == 2) {
         out.segments.push_back({corners[0], corners[1]});
       }
@@ -185,8 +214,47 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
     out.faceColors.reserve(colors.size());
     for (const auto& color : colors) out.faceColors.push_back(color.value_or(kNeutralFaceColor));
   }
+  if (anyTexture) {
+    out.faceTextures = std::move(faceTextures);
+    out.cornerUvs = std::move(cornerUvs);
+  }
   WeldExactPositions(out);
   return out;
+}
+
+// Each texture's image: embedded ("*N", or a name the file embeds) or a file
+// inside the model's folder, decoded here in the import helper, all of them
+// within a quarter of the memory budget. A texture that cannot be read keeps
+// its reason; the model loads without it.
+void DecodeTextures(const aiScene& scene, ConfinedIOSystem& files, size_t memoryBudgetBytes,
+                    Mesh& mesh) {
+  size_t bytesLeft = memoryBudgetBytes / 4;
+  mesh.textureImages.clear();
+  for (const std::string& name : mesh.textures) {
+    TextureImage image;
+    if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.c_str()); embedded != nullptr) {
+      if (embedded->pcData == nullptr) {
+        image.problem = "an embedded image without data";
+      } else if (embedded->mHeight == 0) {
+        image = DecodeTexture(
+            std::string_view(reinterpret_cast<const char*>(embedded->pcData), embedded->mWidth),
+            bytesLeft);
+      } else {
+        image = TextureFromBgra(reinterpret_cast<const uint8_t*>(embedded->pcData),
+                                embedded->mWidth, embedded->mHeight, bytesLeft);
+      }
+    } else if (name.front() == '*') {
+      image.problem = "no such embedded image";
+    } else {
+      std::string path = name;
+      std::replace(path.begin(), path.end(), '\\', '/');  // names written on Windows
+      Loaded<std::string> bytes = files.ReadReference(path);
+      image = bytes.Ok() ? DecodeTexture(bytes.Value(), bytesLeft)
+                         : TextureImage{0, 0, {}, bytes.Error().message};
+    }
+    bytesLeft -= std::min(bytesLeft, image.srgbTexels.size());
+    mesh.textureImages.push_back(std::move(image));
+  }
 }
 
 // What the file says is up: COLLADA's <up_axis>, FBX's UpAxis metadata, else the format's
@@ -295,6 +363,9 @@ Loaded<Mesh> RunAssimpImport(const ImportSource& source, std::string bytes,
   }
   // Step 3: our mesh.
   Mesh mesh = BuildMesh(*scene, placed);
+  // Step 4: the images of the textures the faces use.
+  if (!mesh.faceTextures.empty()) DecodeTextures(*scene, *files, options.memoryBudgetBytes, mesh);
+  if (options.cancel != nullptr && options.cancel->load()) return fail("loading cancelled");
   mesh.name = source.displayName;
   mesh.upAxisFile = FileUpAxis(*scene, source.format, colladaUp);
   if (mesh.FaceCount() == 0) return fail("the file holds no polygons");

@@ -171,6 +171,24 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
   return new BytesStream(std::make_shared<const std::string>(std::move(bytes.Value())), cancel_);
 }
 
+Loaded<std::string> ConfinedIOSystem::ReadReference(const std::string& name) {
+  const auto refuse = [&name](const std::string& reason) {
+    return LoadError{name, 0, 0, reason};
+  };
+  std::string resolved, reason;
+  if (!Resolve(name, resolved, reason)) return refuse(reason);
+  struct stat info {};
+  if (stat(resolved.c_str(), &info) != 0) return refuse("no such file in the model's folder");
+  const auto refuseSize = [this](size_t size) -> std::optional<std::string> {
+    if (size <= bytesLeft_) return std::nullopt;
+    return "it is " + FormatBytes(static_cast<double>(size)) +
+           ", more than the memory budget leaves for it";
+  };
+  Loaded<std::string> bytes = ReadRegularFile(resolved, refuseSize, cancel_);
+  if (bytes.Ok()) bytesLeft_ -= bytes.Value().size();
+  return bytes;
+}
+
 void ConfinedIOSystem::Close(Assimp::IOStream* stream) {
   delete stream;
 }

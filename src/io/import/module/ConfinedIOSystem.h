@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "io/read/LoadError.h"
+
 namespace termshade {
 
 /// Assimp's file access for one model: the model file itself is served from
@@ -27,6 +29,11 @@ class ConfinedIOSystem : public Assimp::IOSystem {
   char getOsSeparator() const override { return '/'; }
   Assimp::IOStream* Open(const char* file, const char* mode) override;
   void Close(Assimp::IOStream* stream) override;
+
+  /// The bytes of a file a model refers to (a texture) by the same rules,
+  /// without failing the import: an error with the reason when it is refused
+  /// or missing. Counts against the same bytes.
+  Loaded<std::string> ReadReference(const std::string& name);
 
   /// Why the first refused reference was refused ("'../x.bin' leaves the model's folder").
   const std::optional<std::string>& Refusal() const { return refusal_; }

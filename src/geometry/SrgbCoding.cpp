@@ -1,0 +1,28 @@
+#include "geometry/SrgbCoding.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace termshade {
+
+float LinearOfSrgb8(uint8_t component) {
+  static const std::array<float, 256> kTable = [] {
+    std::array<float, 256> table{};
+    for (int i = 0; i < 256; ++i) {
+      const double c = i / 255.0;
+      table[i] =
+          static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    return table;
+  }();
+  return kTable[component];
+}
+
+uint8_t Srgb8OfLinear(double linear) {
+  const double c = std::clamp(linear, 0.0, 1.0);
+  const double encoded = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  return static_cast<uint8_t>(std::lround(encoded * 255.0));
+}
+
+}  // namespace termshade

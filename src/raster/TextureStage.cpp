@@ -1,0 +1,161 @@
+#include "raster/TextureStage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "shade/CellColour.h"
+
+namespace termshade {
+namespace {
+
+// A point on a face: its triangle's corners' coordinates weighed.
+struct FacePoint {
+  bool hit = false;
+  Vec3 pWorld;
+};
+
+// Where the ray through (x, y) of the view's frame meets the face's plane.
+FacePoint MeetPlane(const FrameView& view, const FacePlane& plane, double x, double y) {
+  const Projection& p = view.camera.projection;
+  const Vec3 dirEye{(x - p.cx) / p.d, -(y - p.cy) * p.cellAspect / p.d, -1.0};
+  // The eye's rotation is orthonormal: world = its transpose applied.
+  const Mat4& m = view.eyeFromWorld;
+  const Vec3 dirWorld{m.At(0, 0) * dirEye.x + m.At(1, 0) * dirEye.y + m.At(2, 0) * dirEye.z,
+                      m.At(0, 1) * dirEye.x + m.At(1, 1) * dirEye.y + m.At(2, 1) * dirEye.z,
+                      m.At(0, 2) * dirEye.x + m.At(1, 2) * dirEye.y + m.At(2, 2) * dirEye.z};
+  const double along = Dot(plane.normal, dirWorld);
+  if (std::fabs(along) < 1e-300) return {};
+  const double t = (plane.offset - Dot(plane.normal, view.eyeWorld)) / along;
+  if (!std::isfinite(t)) return {};
+  return {true, view.eyeWorld + t * dirWorld};
+}
+
+// Barycentric weights of p in triangle (a, b, c) about the normal.
+std::array<double, 3> Barycentric(Vec3 p, Vec3 a, Vec3 b, Vec3 c, Vec3 normal) {
+  const double whole = Dot(normal, Cross(b - a, c - a));
+  if (whole == 0.0 || !std::isfinite(whole)) return {1.0, 0.0, 0.0};
+  const double wa = Dot(normal, Cross(b - p, c - p)) / whole;
+  const double wb = Dot(normal, Cross(c - p, a - p)) / whole;
+  return {wa, wb, 1.0 - wa - wb};
+}
+
+// The texture coordinates at p on the face: from its triangle holding p (or nearest to it).
+std::array<double, 2> FaceUv(const Scene& scene, uint32_t face, Vec3 p) {
+  const FacePlane& plane = scene.facePlanesWorld[face];
+  double bestLeast = -std::numeric_limits<double>::infinity();
+  std::array<double, 2> best{0.0, 0.0};
+  const uint32_t end = scene.FaceTrianglesBegin(face + 1);
+  for (uint32_t t = scene.FaceTrianglesBegin(face); t < end; ++t) {
+    const auto& v = scene.triangles[t].vertices;
+    const auto w = Barycentric(p, scene.verticesWorld[v[0]], scene.verticesWorld[v[1]],
+                               scene.verticesWorld[v[2]], plane.normal);
+    const double least = std::min({w[0], w[1], w[2]});
+    if (!(least > bestLeast)) continue;
+    bestLeast = least;
+    best = {0.0, 0.0};
+    for (int k = 0; k < 3; ++k) {
+      const auto uv = scene.textures.UvAt(face, v[k]);
+      best[0] += w[k] * uv[0];
+      best[1] += w[k] * uv[1];
+    }
+    if (least >= 0.0) break;
+  }
+  return best;
+}
+
+uint32_t PackLinear(Rgb linear) {
+  const Srgb8 c = EncodeSrgb8(linear);
+  return PackAlbedo(c);
+}
+
+// Running sums of a cell's foreground and background albedos.
+struct AlbedoSums {
+  double fore[3] = {0, 0, 0};
+  double back[3] = {0, 0, 0};
+  int foreCount = 0;
+  int backCount = 0;
+  void Add(double* sum, int& count, Rgb albedo) {
+    sum[0] += albedo.r;
+    sum[1] += albedo.g;
+    sum[2] += albedo.b;
+    ++count;
+  }
+  static uint32_t Mean(const double* sum, int count) {
+    if (count == 0) return 0;
+    return PackLinear(Rgb{static_cast<float>(sum[0] / count), static_cast<float>(sum[1] / count),
+                          static_cast<float>(sum[2] / count)});
+  }
+};
+
+}  // namespace
+
+Rgb TextureStage::SampleAlbedo(const Scene& scene, const FrameView& view, uint32_t face, double x,
+                               double y) const {
+  const TextureLevels& texture = *scene.textures.FaceTexture(face);
+  const FacePlane& plane = scene.facePlanesWorld[face];
+  // Step 1: the sample's point and its neighbours' on the face's plane.
+  const FacePoint here = MeetPlane(view, plane, x, y);
+  if (!here.hit) return texture.Sample(0.0, 0.0, texture.LevelCount() - 1);
+  const auto uv = FaceUv(scene, face, here.pWorld);
+  // Step 2: the footprint, in full-size texels, picks the level.
+  double footprint = 0.0;
+  for (const auto& [dx, dy] : {std::pair{1.0, 0.0}, std::pair{0.0, 1.0}}) {
+    const FacePoint next = MeetPlane(view, plane, x + dx, y + dy);
+    if (!next.hit) continue;
+    const auto uvNext = FaceUv(scene, face, next.pWorld);
+    const double du = (uvNext[0] - uv[0]) * texture.WidthTexels();
+    const double dv = (uvNext[1] - uv[1]) * texture.HeightTexels();
+    footprint = std::max(footprint, std::sqrt(du * du + dv * dv));
+  }
+  Rgb texel = texture.Sample(uv[0], uv[1], texture.LevelFor(footprint));
+  // Step 3: times the face's colour (glTF's base colour factor).
+  if (!scene.source.faceColors.empty()) {
+    const Rgb factor = scene.source.faceColors[face];
+    texel = Rgb{texel.r * factor.r, texel.g * factor.g, texel.b * factor.b};
+  }
+  return texel;
+}
+
+void TextureStage::Apply(const Scene& scene, const FrameView& view, const SampleFrame* samples,
+                         CellBuffer& cells) const {
+  cells.UseAlbedos();
+  const auto textured = [&scene](uint32_t faceNumber) {
+    return faceNumber != 0 && faceNumber <= scene.FaceCount() &&
+           scene.textures.FaceTexture(faceNumber - 1) != nullptr;
+  };
+  const int width = cells.WidthCells(), height = cells.HeightCells();
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) {
+      const size_t cell = cells.Index(col, row);
+      const uint32_t fore = cells.FaceNumber(col, row), back = cells.BackFaceNumber(col, row);
+      if (!textured(fore) && !textured(back)) continue;
+      // One sample a cell: the cell is its sample.
+      if (samples == nullptr) {
+        if (textured(fore)) {
+          cells.ForeAlbedos()[cell] =
+              PackLinear(SampleAlbedo(scene, view, fore - 1, col + 0.5, row + 0.5));
+        }
+        continue;
+      }
+      if (!samples->Touched(cell)) continue;
+      // Several: each of the cell's samples of its two faces, at its center.
+      const SampleGrid grid = samples->Grid();
+      const auto faces = samples->Faces(cell);
+      AlbedoSums sums;
+      for (size_t n = 0; n < faces.size(); ++n) {
+        const uint32_t face = faces[n];
+        if ((face != fore && face != back) || !textured(face)) continue;
+        const double x = col * grid.across + static_cast<double>(n % grid.across) + 0.5;
+        const double y = row * grid.down + static_cast<double>(n / grid.across) + 0.5;
+        const Rgb albedo = SampleAlbedo(scene, view, face - 1, x, y);
+        if (face == fore) sums.Add(sums.fore, sums.foreCount, albedo);
+        if (face == back) sums.Add(sums.back, sums.backCount, albedo);
+      }
+      cells.ForeAlbedos()[cell] = AlbedoSums::Mean(sums.fore, sums.foreCount);
+      cells.BackAlbedos()[cell] = AlbedoSums::Mean(sums.back, sums.backCount);
+    }
+  }
+}
+
+}  // namespace termshade

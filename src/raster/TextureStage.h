@@ -1,0 +1,35 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "geometry/Rgb.h"
+#include "geometry/Scene.h"
+#include "raster/CellBuffer.h"
+#include "raster/FramePlan.h"
+#include "raster/SampleFrame.h"
+
+namespace termshade {
+
+/// The stage after the glyphs when the frame's faces have textures: each
+/// cell's foreground and background albedo (CellBuffer::ForeAlbedo) is the
+/// mean, in linear light, of the texels its samples of that face see, times
+/// the face's colour. A sample's texture coordinates are exact: its ray from
+/// the eye meets its face's plane, and the point's barycentric coordinates in
+/// the face's triangle that holds it weigh the corners' coordinates
+/// (perspective-correct by construction). The texture level follows the
+/// sample's footprint (the coordinates of its right and lower neighbours).
+class TextureStage {
+ public:
+  /// samples: the frame's samples when a cell has several (view from the
+  /// sample camera), else null and the cells are the samples.
+  void Apply(const Scene& scene, const FrameView& view, const SampleFrame* samples,
+             CellBuffer& cells) const;
+
+ private:
+  /// Albedo (linear) at sample (x, y) of the view's frame (cell or sample units) on a face.
+  Rgb SampleAlbedo(const Scene& scene, const FrameView& view, uint32_t face, double x,
+                   double y) const;
+};
+
+}  // namespace termshade
