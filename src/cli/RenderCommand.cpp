@@ -254,6 +254,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
                                           ResolveColourMode(*colourMode) != ColourMode::kNone)
                              : *glyphs;
   renderOptions.cullBackFaces = !options.noCull;
+  renderOptions.textures = options.textures != "off";
   if (options.lightRadians)
     renderOptions.sunEye = SunFromAngles(options.lightRadians->first, options.lightRadians->second);
   renderOptions.threads = options.threads;

@@ -50,6 +50,8 @@ struct RenderCommandOptions {
   std::optional<std::pair<double, double>> lightRadians;
   /// --lod auto|off; empty: the command's default (render: off, exact dumps; viewer: auto).
   std::string lod;
+  /// --textures on|off: faces take their texture's colours where colours are shown (default on).
+  std::string textures;
 };
 
 /// Frame size without --size when stdout is not a terminal (or -o is given);

@@ -236,6 +236,11 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
                   "level of detail: auto (a simplified copy of a big model where its triangles "
                   "are far below a sample; the viewer's default) or off (exact; render's default)")
       ->check(CLI::IsMember({"auto", "off"}));
+  command
+      .add_option("--textures", options.textures,
+                  "on (default): where colours are shown, faces with a base-colour texture take "
+                  "its colours, sample by sample; off: their face colour")
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::string>& models,
@@ -248,6 +253,7 @@ int RunViewerFrom(const RenderCommandOptions& look, const std::vector<std::strin
                       : *termshade::ParseColourMode(look.colour.empty() ? "auto" : look.colour);
   if (!look.background.empty()) viewer.background = termshade::ParseBackground(look.background);
   viewer.render.method = *termshade::ParseMethod(look.method);
+  viewer.render.textures = look.textures != "off";
   viewer.render.shade = *termshade::ParseShadeMode(look.shade);
   if (const auto problem = termshade::ShadeRamp::Problem(look.ramp)) {
     std::cerr << "termshade: --ramp: " << *problem << "\n";

@@ -57,6 +57,7 @@ std::string RenderCommandFor(const ViewToReproduce& shown) {
   if (const std::string ramp = RampText(shown.render.ramp); ramp != ShadeRamp::kDefaultGlyphs)
     command += Option("--ramp", ShellQuote(ramp));
   if (!shown.render.cullBackFaces) command += " --no-cull";
+  if (!shown.render.textures) command += " --textures off";
   if (shown.sunAzimuthRadians != 0.0 || shown.sunElevationRadians != 0.0) {
     command += Option("--light", ExactNumber(shown.sunAzimuthRadians) + "," +
                                      ExactNumber(shown.sunElevationRadians));

@@ -751,7 +751,8 @@ class EventLoop {
     fields.view = viewText;
     fields.method = std::string(MethodName(render.method)) + " " +
                     std::string(ShadeModeName(render.shade)) +
-                    (render.cullBackFaces ? "" : " 2-sided");
+                    (render.cullBackFaces ? "" : " 2-sided") +
+                    (scene.textures.Any() ? (render.textures ? " textured" : " untextured") : "");
     fields.upAxis = std::string(UpAxisName(scene.upAxis));
     fields.vertices = scene.verticesWorld.size();
     fields.faces = scene.FaceCount();

@@ -36,6 +36,8 @@ ViewerAction ActionForChar(int ascii) {
       return ViewerAction::kToggleTurntable;
     case 'b':
       return ViewerAction::kToggleCulling;
+    case 't':
+      return ViewerAction::kToggleTextures;
     case 'u':
       return ViewerAction::kCycleUpAxis;
     case 'o':

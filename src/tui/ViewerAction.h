@@ -20,6 +20,7 @@ enum class ViewerAction {
   kToggleLightMode,
   kToggleTurntable,
   kToggleCulling,
+  kToggleTextures,
   kCycleUpAxis,
   kOpenFile,
   kNextModel,

@@ -17,6 +17,7 @@ constexpr std::array kKeys{
     ViewerKey{"m", "method: zbuffer painter cull wire auto", "m"},
     ViewerKey{"s", "shading: contrast / lambert", "s"},
     ViewerKey{"b", "back faces: culled / drawn", "b"},
+    ViewerKey{"t", "textures: drawn / face colours only", "t"},
     ViewerKey{"u", "up axis: +z +y +x -z -y -x", "u"},
     ViewerKey{"c", "colour mode: next the terminal has", "c"},
     ViewerKey{"g", "glyphs: ramp ascii blocks quadrants sextants braille", "g"},

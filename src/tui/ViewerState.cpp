@@ -253,6 +253,9 @@ void ViewerState::Apply(ViewerAction action) {
     case ViewerAction::kToggleCulling:
       render_.cullBackFaces = !render_.cullBackFaces;
       break;
+    case ViewerAction::kToggleTextures:
+      render_.textures = !render_.textures;
+      break;
     case ViewerAction::kCycleUpAxis:
       CycleUpAxis();
       break;
