@@ -312,13 +312,94 @@ TEST(InputDecoder, AnswersSplitWithGapsAndBadOnesNeverBecomeKeys) {
   EXPECT_EQ(cut[1].key, 27);
   EXPECT_EQ(cut[2].key, 1);
   EXPECT_EQ(cut[3].key, 'q');
-  // Alt-] and Alt-P followed by a letter stay keys; so does a CSI t that is no cell size.
-  for (const std::string& bytes :
-       {std::string("\x1b]x"), std::string("\x1bPq"), std::string("\x1b[8;24;80t")}) {
+  // Alt-] and Alt-P followed by a letter stay keys.
+  for (const std::string& bytes : {std::string("\x1b]x"), std::string("\x1bPq")}) {
     const auto events = Decode(bytes);
     ASSERT_EQ(events.size(), bytes.size()) << bytes.substr(1);
     for (size_t i = 0; i < bytes.size(); ++i) EXPECT_EQ(events[i].key, bytes[i]) << bytes.substr(1);
   }
+  // No key sends CSI digits t: a window report that is no cell size is an
+  // answer of no use, never keys (t, digits and ; are viewer keys).
+  const auto window = Decode("\x1b[8;24;80tq");
+  ASSERT_EQ(window.size(), 2U);
+  ASSERT_TRUE(window[0].reply.has_value());
+  EXPECT_EQ(window[0].reply->kind, TerminalReply::Kind::kOther);
+  EXPECT_EQ(window[1].key, 'q');
+}
+
+// A terminal's bytes against a clock: kGap is a moment nothing waits (as in
+// DecodeWithGaps), kLongGap one that lasts 1.2 s (past the second an answer
+// cut short is otherwise waited for). Next() called after each, as the
+// event loop does; no answer due (the frame pacer gave up on the terminal).
+constexpr int kLongGap = -3;
+struct ClockedDecoder {
+  std::deque<int> keys;
+  InputDecoder::Clock::time_point clock{};
+  InputDecoder decoder{[this] { return Take(); }, [this] { return Take(); },
+                       [this] { return clock; }};
+  int Take() {
+    if (keys.empty()) return kNoInput;
+    const int key = keys.front();
+    keys.pop_front();
+    if (key == kLongGap) clock += std::chrono::milliseconds(1200);
+    return key < 0 ? kNoInput : key;
+  }
+  std::vector<InputEvent> Run(const std::vector<int>& script) {
+    keys.insert(keys.end(), script.begin(), script.end());
+    std::vector<InputEvent> events;
+    do {
+      for (auto event = decoder.Next(); event; event = decoder.Next()) events.push_back(*event);
+    } while (!keys.empty());
+    return events;
+  }
+};
+
+TEST(InputDecoder, StartUpAnswersLateAndSplitWithLongGapsNeverBecomeKeys) {
+  ClockedDecoder terminal;
+  terminal.decoder.ExpectStartupAnswers();
+  // Cut after the ESC, inside the OSC and before its ST, inside the DCS, the
+  // CSI t and the DA1 answer; 1.2 s between the pieces.
+  std::vector<int> script;
+  for (const std::string& piece :
+       {std::string("\x1b"), std::string("]11;rgb:ffff/ff"), std::string("ff/ffff\x1b"),
+        std::string("\\\x1bP1+r5247"), std::string("42\x1b\\\x1b[6;"), std::string("17;8"),
+        std::string("t\x1b["), std::string("?62;22cq")}) {
+    for (const int byte : Bytes(piece)) script.push_back(byte);
+    script.push_back(kGap);
+    script.push_back(kLongGap);
+  }
+  const auto events = terminal.Run(script);
+  ASSERT_EQ(events.size(), 5U);
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(events[i].reply.has_value()) << i;
+  EXPECT_EQ(events[0].reply->kind, TerminalReply::Kind::kBackgroundColour);
+  EXPECT_DOUBLE_EQ(events[0].reply->red, 1.0);
+  EXPECT_EQ(events[1].reply->capability, "RGB");
+  EXPECT_EQ(events[2].reply->kind, TerminalReply::Kind::kCellSize);
+  EXPECT_EQ(events[2].reply->cellHeightPx, 17);
+  EXPECT_TRUE(events[3].deviceAnswer);
+  EXPECT_EQ(events[4].key, 'q');
+  // The DA1 answer ends the wait for them: an Esc alone is a key at once.
+  EXPECT_FALSE(terminal.decoder.ExpectingStartupAnswers());
+  const auto esc = terminal.Run({27, kGap});
+  ASSERT_EQ(esc.size(), 1U);
+  EXPECT_EQ(esc[0].key, 27);
+}
+
+TEST(InputDecoder, TheStartUpAnswersAreExpectedForTenSecondsAtMost) {
+  ClockedDecoder terminal;
+  terminal.decoder.ExpectStartupAnswers();
+  // A piece whose rest never comes waits while the answers are expected...
+  std::vector<int> script = Bytes("\x1b[6;");
+  for (int i = 0; i < 8; ++i) script.push_back(kLongGap);  // 9.6 s
+  EXPECT_TRUE(terminal.Run(script).empty());
+  EXPECT_TRUE(terminal.decoder.ExpectingStartupAnswers());
+  EXPECT_TRUE(terminal.decoder.WaitsForRest());
+  // ...and is given up (here as the keys it was) once they are not.
+  const auto events = terminal.Run({kLongGap, kGap});
+  EXPECT_FALSE(terminal.decoder.ExpectingStartupAnswers());
+  ASSERT_EQ(events.size(), 4U);
+  EXPECT_EQ(events[0].key, 27);
+  EXPECT_EQ(events[3].key, ';');
 }
 
 TEST(InputDecoder, AnAnswerLongerThanAnyAskedForIsReadToItsEndNotKeys) {

@@ -105,10 +105,12 @@ std::optional<InputEvent> InputDecoder::Next() {
     }
     // Inside a sequence: its rest is awaited (once, for one stalled before).
     // An answer waits across calls, never keys; so does any sequence while
-    // one is due; a second without a byte ends the wait.
+    // one is due; a second without a byte ends the wait, unless the
+    // start-up answers are expected.
     const int key = Read(!stalled_);
-    const bool stale = stalled_ && now_() - lastByte_ > kAnswerGapLimit;
-    if (key == kNoInput && (answer_ || answerDue_) && !stale) {
+    const bool startup = ExpectingStartupAnswers();
+    const bool stale = stalled_ && !startup && now_() - lastByte_ > kAnswerGapLimit;
+    if (key == kNoInput && (answer_ || answerDue_ || startup) && !stale) {
       stalled_ = true;
       return std::nullopt;
     }
@@ -214,6 +216,7 @@ void InputDecoder::FinishCsi(int finalByte) {
     InputEvent event;
     if (finalByte == 'c' && !overlong && DeviceAnswerParameters(body_)) {
       event.deviceAnswer = true;
+      startupUntil_.reset();  // answered last: no start-up answer follows
     } else {
       event.reply = TerminalReply{};  // another answer, of no use here
     }
@@ -230,6 +233,11 @@ void InputDecoder::FinishCsi(int finalByte) {
   }
   if (auto reply = ReplyFromCsi(body_, static_cast<char>(finalByte))) {
     Finish(ReplyEvent(std::move(*reply)));
+    return;
+  }
+  // No key sends ESC [ digits t: a window report of no use, never keys.
+  if (finalByte == 't' && !body_.empty() && body_[0] >= '0' && body_[0] <= '9') {
+    Drop();
     return;
   }
   GiveBack();

@@ -42,16 +42,19 @@ struct InputEvent {
 /// over SSH or while a frame is drawn) but hands out only the last, so a
 /// drag whose press came in one burst with its release never started.
 ///
-/// A sequence no key sends (ESC [ ?, ESC ] digit, ESC P digit) is an answer:
-/// its bytes never come out as keys. Cut short, it waits for its rest across
-/// calls (a gap under load), until a second passes without a byte; control
-/// keys typed into it (Ctrl-C) come out as keys at once. Any other
-/// sequence that is not a whole report or answer comes out as the keys it
-/// was, in order. A lone Esc is one that nothing follows within the await.
-/// While an answer is due (SetAnswerDue) any sequence cut short waits as an
-/// answer does (an answer's ESC may arrive alone, its rest later): an Esc is
-/// then one that something other than [, ] or P follows, or nothing for a
-/// second (a call of Next() after it: WaitsForRest).
+/// A sequence no key sends (ESC [ ?, ESC ] digit, ESC P digit, ESC [ digits
+/// t) is an answer: its bytes never come out as keys. Cut short, it waits
+/// for its rest across calls (a gap under load), until a second passes
+/// without a byte; control keys typed into it (Ctrl-C) come out as keys at
+/// once. Any other sequence that is not a whole report or answer comes out
+/// as the keys it was, in order. A lone Esc is one that nothing follows
+/// within the await. While an answer is due (SetAnswerDue) any sequence cut
+/// short waits as an answer does (an answer's ESC may arrive alone, its rest
+/// later): an Esc is then one that something other than [, ] or P follows,
+/// or nothing for a second (a call of Next() after it: WaitsForRest).
+/// While the start-up answers are expected (ExpectStartupAnswers, until
+/// their DA1 answer or kStartupAnswerLimit) the second does not apply: on a
+/// slow link they come late and in pieces, after the frame pacer gave up.
 class InputDecoder {
  public:
   using Clock = std::chrono::steady_clock;
@@ -66,6 +69,14 @@ class InputDecoder {
   bool InsideAnswer() const { return answer_; }
   /// Whether the terminal owes an answer (a request in flight).
   void SetAnswerDue(bool due) { answerDue_ = due; }
+  /// The longest the start-up answers are expected after ExpectStartupAnswers().
+  static constexpr std::chrono::seconds kStartupAnswerLimit{10};
+  /// The start-up queries were sent: until their DA1 answer is read (at most
+  /// kStartupAnswerLimit), a sequence cut short waits for its rest however
+  /// long the gap.
+  void ExpectStartupAnswers() { startupUntil_ = now_() + kStartupAnswerLimit; }
+  /// Whether the start-up answers are still expected.
+  bool ExpectingStartupAnswers() const { return startupUntil_ && now_() < *startupUntil_; }
   /// Whether a sequence cut short waits for its rest: Next() should be
   /// called again within a second, though no input comes, to give it up.
   bool WaitsForRest() const { return stalled_; }
@@ -101,6 +112,7 @@ class InputDecoder {
   bool answer_ = false;       ///< the sequence is an answer: never keys
   bool stalled_ = false;      ///< the last await for its rest found nothing
   bool answerDue_ = false;
+  std::optional<Clock::time_point> startupUntil_;  ///< the start-up answers expected until then
   Clock::time_point lastByte_{};
 };
 

@@ -180,6 +180,7 @@ class EventLoop {
       // terminal, applied before one redraw: the next frame shows the newest view.
       input_.SetAnswerDue(pacer_.Answering() && pacer_.RequestsInFlight() > 0);
       for (auto event = input_.Next(); event; event = input_.Next()) HandleInput(*event);
+      SettleRecordingTheme();
       if (state_.Turntable() != turning_) {  // space: turning starts (or stops) now
         turning_ = state_.Turntable();
         lastTurn_ = Clock::now();
@@ -219,6 +220,7 @@ class EventLoop {
     pacer_.RequestSent(Clock::now(), 0);
     std::vector<InputEvent> early;
     const auto deadline = Clock::now() + std::chrono::milliseconds(kStartupAnswerWaitMs);
+    input_.ExpectStartupAnswers();  // late pieces of them stay answers, never keys
     input_.SetAnswerDue(true);
     while (!startupAnswered_) {
       const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
@@ -235,6 +237,16 @@ class EventLoop {
       }
     }
     for (const InputEvent& event : early) HandleInput(event);
+    SettleRecordingTheme();
+  }
+
+  // The recording's header takes the background the start-up answers said,
+  // once no more of them come (their DA1 answer read, or no longer expected).
+  void SettleRecordingTheme() {
+    if (recording_ == nullptr || recordingThemeSettled_) return;
+    if (answerUse_.background && !startupAnswered_ && input_.ExpectingStartupAnswers()) return;
+    recording_->SettleTheme(ThemeFor(state_.Background()));
+    recordingThemeSettled_ = true;
   }
 
   // One answer to the start-up queries, and what the answers say now, where
@@ -816,8 +828,9 @@ class EventLoop {
   bool dirty_ = true;
   InputDecoder input_;
   AnswerUse answerUse_;
-  TerminalAnswers answers_;       ///< what the start-up queries' answers said
-  bool startupAnswered_ = false;  ///< the first DA1 answer came: no more of them
+  TerminalAnswers answers_;             ///< what the start-up queries' answers said
+  bool startupAnswered_ = false;        ///< the first DA1 answer came: no more of them
+  bool recordingThemeSettled_ = false;  ///< the recording's header has its theme
   bool dragging_ = false;
   int dragCol_ = 0;
   int dragRow_ = 0;

@@ -4,7 +4,9 @@
 # after q the shell's line holds nothing of the terminal's answers. On a pty
 # played by queries_pty.py: a silent terminal costs the 100 ms wait, an
 # answering one ends it at its DA1 answer and its RGB makes truecolor, a
-# late one (300 ms) gets the first frame after the wait and truecolor later.
+# late one (300 ms) gets the first frame after the wait and truecolor later;
+# one 1.5 s late in pieces up to 1.3 s apart has every answer count, none
+# read as keys; --record's header takes the answered (light) background.
 # Usage: queries_test.sh path/to/termshade
 set -u
 bin=$(realpath "$1")
