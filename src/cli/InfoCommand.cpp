@@ -28,6 +28,8 @@ struct ModelInfo {
   bool upOverridden = false;
   size_t facesTurnedOutward = 0;
   std::vector<TextureReference> textures;
+  /// Parallel to textures: "drawn, W x H texels", or why not.
+  std::vector<std::string> textureStates;
   double loadMs = 0.0;
   double peakMiB = 0.0;        ///< this process, so far
   double helperPeakMiB = 0.0;  ///< the import helpers, so far
@@ -49,15 +51,33 @@ std::string Point(const Vec3& p) {
   return Number(p.x) + ", " + Number(p.y) + ", " + Number(p.z);
 }
 
-// "none named", or each name and where it is: "2: duckCM.tga (found), *0 (embedded)".
-std::string TexturesText(const std::vector<TextureReference>& textures) {
-  if (textures.empty()) return "none named";
-  std::string text = std::to_string(textures.size()) + ":";
-  for (size_t i = 0; i < textures.size(); ++i) {
-    text += (i == 0 ? " " : ", ") + SanitizeForTerminal(textures[i].name) + " (" +
-            std::string(TextureWhereName(textures[i].where)) + ")";
+// Whether each texture is drawn: its size, or why it is not.
+std::vector<std::string> TextureStates(const Mesh& mesh) {
+  std::vector<std::string> states;
+  for (size_t i = 0; i < mesh.textures.size(); ++i) {
+    if (i >= mesh.textureImages.size()) {
+      states.emplace_back("not drawn: no face has coordinates into it");
+    } else if (const TextureImage& image = mesh.textureImages[i]; image.Decoded()) {
+      states.push_back("drawn, " + std::to_string(image.widthTexels) + " x " +
+                       std::to_string(image.heightTexels) + " texels");
+    } else {
+      states.push_back("not drawn: " + image.problem);
+    }
   }
-  return text + "; not drawn yet (the face colours are)";
+  return states;
+}
+
+// "none named", or each name, where it is and whether it is drawn:
+// "1: duckCM.tga (found; drawn, 512 x 512 texels)".
+std::string TexturesText(const ModelInfo& info) {
+  if (info.textures.empty()) return "none named";
+  std::string text = std::to_string(info.textures.size()) + ":";
+  for (size_t i = 0; i < info.textures.size(); ++i) {
+    text += (i == 0 ? " " : ", ") + SanitizeForTerminal(info.textures[i].name) + " (" +
+            std::string(TextureWhereName(info.textures[i].where)) + "; " +
+            SanitizeForTerminal(info.textureStates[i]) + ")";
+  }
+  return text;
 }
 
 void PrintText(const ModelInfo& info) {
@@ -80,7 +100,7 @@ void PrintText(const ModelInfo& info) {
             << (m.faceColours == 0 ? std::string("none given (drawn in the default grey)")
                                    : std::to_string(m.faceColours) + " distinct face colours")
             << "\n"
-            << "  textures     " << TexturesText(info.textures) << "\n"
+            << "  textures     " << TexturesText(info) << "\n"
             << "  load         " << Number(info.loadMs, "%.1f") << " ms, peak memory "
             << Number(info.peakMiB, "%.1f") << " MiB"
             << (info.reader.starts_with("Assimp (import helper)")
@@ -111,6 +131,8 @@ void PrintJson(const ModelInfo& info) {
     AppendJsonText(SanitizeForTerminal(info.textures[i].name, 4096), out);
     out += ", \"where\": ";
     AppendJsonText(std::string(TextureWhereName(info.textures[i].where)), out);
+    out += ", \"state\": ";
+    AppendJsonText(SanitizeForTerminal(info.textureStates[i], 4096), out);
     out += "}";
   }
   out += std::string("]") + ", \"loadMs\": " + Number(info.loadMs, "%.3f") +
@@ -145,6 +167,7 @@ int RunInfoCommand(const InfoCommandOptions& options) {
     info.mesh = ReportMesh(loaded.Value());
     info.fileUp = UpAxisName(loaded.Value().upAxisFile);
     info.textures = LocateTextures(loaded.Value().textures, path);
+    info.textureStates = TextureStates(loaded.Value());
     const Scene scene = PrepareScene(std::move(loaded.Value()), options.upAxis);
     info.loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
