@@ -45,9 +45,9 @@ printf 'PNG' >"$work/tex/sub/wood.png"
 printf 'PNG' >"$work/outside.png"
 "$bin" info "$work/tex/sub/box.obj" >"$work/tex.txt" 2>&1
 expect textures_exit_0 test $? -eq 0
-expect textures_found grep -qE '^  textures +3: .*wood\.png \(found\)' "$work/tex.txt"
-expect textures_outside grep -q 'outside.png (outside the model.s folder (not looked at))' "$work/tex.txt"
-expect textures_missing grep -q 'gone.png (missing)' "$work/tex.txt"
+expect textures_found grep -qE '^  textures +3: .*wood\.png \(found; ' "$work/tex.txt"
+expect textures_outside grep -q 'outside.png (outside the model.s folder (not looked at); ' "$work/tex.txt"
+expect textures_missing grep -q 'gone.png (missing; ' "$work/tex.txt"
 "$bin" info --format json "$work/tex/sub/box.obj" >"$work/tex.json"
 expect textures_json python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["textures"]; sys.exit(sorted(x["where"] for x in t) != ["found", "missing", "outside the model'"'"'s folder (not looked at)"])' "$work/tex.json"
 "$bin" info "$src/data/cube.dat" | grep -qE '^  textures +none named$'
