@@ -12,6 +12,7 @@
 #include "geometry/ViewingTransform.h"
 #include "raster/Renderer.h"
 #include "shade/CellColour.h"
+#include "shade/GlyphMode.h"
 
 namespace termshade {
 namespace {
@@ -19,12 +20,13 @@ namespace {
 constexpr Srgb8 kRed{255, 0, 0};
 constexpr Srgb8 kBlue{0, 0, 255};
 
-// A texture whose left half (u < 0.5) is red and right half blue.
-TextureImage HalvesTexture(uint32_t side) {
+// A texture red left of `splitTexels` (default: half) and blue right of it.
+TextureImage HalvesTexture(uint32_t side, uint32_t splitTexels = 0) {
+  if (splitTexels == 0) splitTexels = side / 2;
   TextureImage image{side, side, {}, {}};
   for (uint32_t y = 0; y < side; ++y) {
     for (uint32_t x = 0; x < side; ++x) {
-      const Srgb8 c = x < side / 2 ? kRed : kBlue;
+      const Srgb8 c = x < splitTexels ? kRed : kBlue;
       image.srgbTexels.insert(image.srgbTexels.end(), {c.r, c.g, c.b});
     }
   }
@@ -120,6 +122,31 @@ TEST(TextureStage, TheBoundaryLiesWherePerspectivePutsItNotMidwayOnScreen) {
     const bool leftOfBoundary = (center < exact) == (columnOf({0, -1, z}) < exact);
     EXPECT_EQ(Unpacked(drawn.cells.ForeAlbedo(col, row)), leftOfBoundary ? kRed : kBlue)
         << "column " << col << ", exact boundary " << exact << ", affine " << affine;
+  }
+}
+
+TEST(TextureStage, ABlockCellAcrossTheTexturesBoundaryShowsBothSides) {
+  // (Split at 3/8: the boundary crosses cells, not a cell edge.)
+  const Scene scene = PrepareScene(TexturedSquare(HalvesTexture(256, 96)));
+  const Camera camera{{6.0, 0.0, std::numbers::pi / 2}, FitProjection(1.5, 6.0, 80, 24, 2.0)};
+  // (Blocks split a cell top from bottom: a vertical boundary is not theirs to show.)
+  for (const GlyphMode mode : {GlyphMode::kSextants, GlyphMode::kQuadrants}) {
+    const Drawn drawn = Draw(scene, camera, mode);
+    int split = 0;
+    for (int row = 0; row < 24; ++row) {
+      for (int col = 0; col < 80; ++col) {
+        const uint32_t fore = drawn.cells.ForeAlbedo(col, row);
+        const uint32_t back = drawn.cells.BackAlbedo(col, row);
+        if (fore == 0 || back == 0 || fore == back) continue;
+        // One face, two colours: the pattern splits the cell's samples.
+        EXPECT_EQ(drawn.cells.FaceNumber(col, row), drawn.cells.BackFaceNumber(col, row));
+        EXPECT_NE(drawn.cells.Glyph(col, row), U' ');
+        EXPECT_NE(drawn.cells.Glyph(col, row), U'\u2588');
+        ++split;
+      }
+    }
+    // Each row the square covers has its boundary in one column, split there.
+    EXPECT_GE(split, 5) << GlyphModeName(mode);
   }
 }
 

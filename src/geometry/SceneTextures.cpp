@@ -13,8 +13,7 @@ std::array<float, 2> SceneTextures::UvAt(size_t face, uint32_t vertex) const {
 
 SceneTextures TakeSceneTextures(Mesh& mesh) {
   SceneTextures out;
-  const bool usable = !mesh.faceTextures.empty() &&
-                      mesh.faceTextures.size() == mesh.FaceCount() &&
+  const bool usable = !mesh.faceTextures.empty() && mesh.faceTextures.size() == mesh.FaceCount() &&
                       mesh.cornerUvs.size() == mesh.faceCorners.size() &&
                       mesh.textureImages.size() == mesh.textures.size() &&
                       std::any_of(mesh.textureImages.begin(), mesh.textureImages.end(),
@@ -43,7 +42,8 @@ void GiveBackTextures(const SceneTextures& textures, Mesh& mesh) {
   mesh.faceTextures = textures.faceTextures;
   mesh.cornerUvs.clear();
   for (size_t face = 0; face < mesh.FaceCount(); ++face) {
-    for (const uint32_t vertex : mesh.Face(face)) mesh.cornerUvs.push_back(textures.UvAt(face, vertex));
+    for (const uint32_t vertex : mesh.Face(face))
+      mesh.cornerUvs.push_back(textures.UvAt(face, vertex));
   }
 }
 

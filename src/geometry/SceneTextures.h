@@ -15,8 +15,8 @@ namespace termshade {
 /// reversed or triangulated; a corner keeps its coordinates), and each
 /// texture's levels. Empty when no face has a decoded texture.
 struct SceneTextures {
-  std::vector<std::string> names;    ///< Mesh::textures
-  std::vector<TextureLevels> images;  ///< parallel to names; empty where not decoded
+  std::vector<std::string> names;      ///< Mesh::textures
+  std::vector<TextureLevels> images;   ///< parallel to names; empty where not decoded
   std::vector<uint32_t> faceTextures;  ///< per face: index into images, or kNoTexture
   /// The faces' corners as the file gave them (faceCount + 1 starts), and their coordinates.
   std::vector<uint32_t> uvStarts;

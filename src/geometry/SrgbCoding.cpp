@@ -11,8 +11,7 @@ float LinearOfSrgb8(uint8_t component) {
     std::array<float, 256> table{};
     for (int i = 0; i < 256; ++i) {
       const double c = i / 255.0;
-      table[i] =
-          static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+      table[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
     }
     return table;
   }();

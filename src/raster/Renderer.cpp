@@ -37,8 +37,12 @@ RenderStats Renderer::Render(const Scene& scene, const Camera& camera, const Ren
   if (plan.target != SurfaceTarget::kCells) ComposeGlyphs(plan, depth, cells);
   // Step 5: textured faces: each cell's colours from the texels its samples see.
   if (plan.textures) {
-    textureStage_.Apply(scene, plan.view,
-                        plan.target == SurfaceTarget::kCells ? nullptr : &sampleFrame_, cells);
+    if (plan.target == SurfaceTarget::kCells) {
+      textureStage_.Apply(scene, plan.view, cells);
+    } else {
+      textureStage_.Apply(scene, plan.view,
+                          {sampleFrame_, shadeStage_.FaceIntensities(), plan.glyphs}, cells);
+    }
   } else {
     cells.DropAlbedos();
   }

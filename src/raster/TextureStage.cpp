@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "raster/TextureDetail.h"
 #include "shade/CellColour.h"
 
 namespace termshade {
@@ -117,40 +118,61 @@ Rgb TextureStage::SampleAlbedo(const Scene& scene, const FrameView& view, uint32
   return texel;
 }
 
-void TextureStage::Apply(const Scene& scene, const FrameView& view, const SampleFrame* samples,
-                         CellBuffer& cells) const {
+void TextureStage::Apply(const Scene& scene, const FrameView& view, CellBuffer& cells) const {
+  cells.UseAlbedos();
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    for (int col = 0; col < cells.WidthCells(); ++col) {
+      const uint32_t face = cells.FaceNumber(col, row);
+      if (face == 0 || scene.textures.FaceTexture(face - 1) == nullptr) continue;
+      cells.ForeAlbedos()[cells.Index(col, row)] =
+          PackLinear(SampleAlbedo(scene, view, face - 1, col + 0.5, row + 0.5));
+    }
+  }
+}
+
+void TextureStage::Apply(const Scene& scene, const FrameView& view, const Samples& samples,
+                         CellBuffer& cells) {
   cells.UseAlbedos();
   const auto textured = [&scene](uint32_t faceNumber) {
     return faceNumber != 0 && faceNumber <= scene.FaceCount() &&
            scene.textures.FaceTexture(faceNumber - 1) != nullptr;
   };
-  const int width = cells.WidthCells(), height = cells.HeightCells();
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) {
+  const auto& faceColours = scene.source.faceColors;
+  const SampleGrid grid = samples.frame.Grid();
+  const GlyphPlan& glyphs = samples.glyphs;
+  const bool detail = glyphs.twoColour &&
+                      (glyphs.mode == GlyphMode::kBlocks || glyphs.mode == GlyphMode::kQuadrants ||
+                       glyphs.mode == GlyphMode::kSextants);
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    for (int col = 0; col < cells.WidthCells(); ++col) {
       const size_t cell = cells.Index(col, row);
-      const uint32_t fore = cells.FaceNumber(col, row), back = cells.BackFaceNumber(col, row);
-      if (!textured(fore) && !textured(back)) continue;
-      // One sample a cell: the cell is its sample.
-      if (samples == nullptr) {
-        if (textured(fore)) {
-          cells.ForeAlbedos()[cell] =
-              PackLinear(SampleAlbedo(scene, view, fore - 1, col + 0.5, row + 0.5));
-        }
-        continue;
-      }
-      if (!samples->Touched(cell)) continue;
-      // Several: each of the cell's samples of its two faces, at its center.
-      const SampleGrid grid = samples->Grid();
-      const auto faces = samples->Faces(cell);
-      AlbedoSums sums;
+      if (!samples.frame.Touched(cell)) continue;
+      // Step 1: each sample's albedo: its texel, its face's colour, or none.
+      const auto faces = samples.frame.Faces(cell);
+      if (std::none_of(faces.begin(), faces.end(), textured)) continue;
+      albedos_.assign(faces.size(), Rgb{});
       for (size_t n = 0; n < faces.size(); ++n) {
         const uint32_t face = faces[n];
-        if ((face != fore && face != back) || !textured(face)) continue;
-        const double x = col * grid.across + static_cast<double>(n % grid.across) + 0.5;
-        const double y = row * grid.down + static_cast<double>(n / grid.across) + 0.5;
-        const Rgb albedo = SampleAlbedo(scene, view, face - 1, x, y);
-        if (face == fore) sums.Add(sums.fore, sums.foreCount, albedo);
-        if (face == back) sums.Add(sums.back, sums.backCount, albedo);
+        if (textured(face)) {
+          const double x = col * grid.across + static_cast<double>(n % grid.across) + 0.5;
+          const double y = row * grid.down + static_cast<double>(n / grid.across) + 0.5;
+          albedos_[n] = SampleAlbedo(scene, view, face - 1, x, y);
+        } else if (face != 0) {
+          albedos_[n] = face <= faceColours.size() ? faceColours[face - 1] : kDefaultFaceColour;
+        }
+      }
+      // Step 2: the texture's detail inside the cell, where the glyphs can show it.
+      if (detail && SplitTexturedCell({col, row, grid, faces, albedos_}, samples.faceIntensities,
+                                      glyphs, cells)) {
+        continue;
+      }
+      // Step 3: else each side's albedo: the mean over the samples of its face.
+      const uint32_t fore = cells.FaceNumber(col, row), back = cells.BackFaceNumber(col, row);
+      AlbedoSums sums;
+      for (size_t n = 0; n < faces.size(); ++n) {
+        if (!textured(faces[n])) continue;
+        if (faces[n] == fore) sums.Add(sums.fore, sums.foreCount, albedos_[n]);
+        if (faces[n] == back) sums.Add(sums.back, sums.backCount, albedos_[n]);
       }
       cells.ForeAlbedos()[cell] = AlbedoSums::Mean(sums.fore, sums.foreCount);
       cells.BackAlbedos()[cell] = AlbedoSums::Mean(sums.back, sums.backCount);

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "geometry/Rgb.h"
 #include "geometry/Scene.h"
@@ -19,17 +21,27 @@ namespace termshade {
 /// the face's triangle that holds it weigh the corners' coordinates
 /// (perspective-correct by construction). The texture level follows the
 /// sample's footprint (the coordinates of its right and lower neighbours).
+/// In the block modes a cell of textured samples may then show the texture's
+/// detail inside it (SplitTexturedCell).
 class TextureStage {
  public:
-  /// samples: the frame's samples when a cell has several (view from the
-  /// sample camera), else null and the cells are the samples.
-  void Apply(const Scene& scene, const FrameView& view, const SampleFrame* samples,
-             CellBuffer& cells) const;
+  /// A frame of several samples a cell (seen from the sample camera), the
+  /// intensity of each face seen, and how its glyphs were made.
+  struct Samples {
+    const SampleFrame& frame;
+    std::span<const uint8_t> faceIntensities;
+    const GlyphPlan& glyphs;
+  };
+  /// One sample a cell: the cells are the samples.
+  void Apply(const Scene& scene, const FrameView& view, CellBuffer& cells) const;
+  void Apply(const Scene& scene, const FrameView& view, const Samples& samples, CellBuffer& cells);
 
  private:
   /// Albedo (linear) at sample (x, y) of the view's frame (cell or sample units) on a face.
   Rgb SampleAlbedo(const Scene& scene, const FrameView& view, uint32_t face, double x,
                    double y) const;
+
+  std::vector<Rgb> albedos_;  ///< one cell's samples' albedos (kept between cells)
 };
 
 }  // namespace termshade
