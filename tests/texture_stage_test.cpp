@@ -8,8 +8,10 @@
 #include "geometry/Projection.h"
 #include "geometry/Scene.h"
 #include "geometry/SrgbCoding.h"
+#include "geometry/LevelOfDetail.h"
 #include "geometry/TextureLevels.h"
 #include "geometry/ViewingTransform.h"
+#include "io/scenes/SceneGenerators.h"
 #include "raster/Renderer.h"
 #include "shade/CellColour.h"
 #include "shade/GlyphMode.h"
@@ -208,6 +210,52 @@ TEST(TextureLevels, LookupsRepeatAndSurviveAnyCoordinate) {
   EXPECT_EQ(levels.LevelFor(0.5), 0);
   EXPECT_EQ(levels.LevelFor(4.0), 2);
   EXPECT_EQ(levels.LevelFor(1e12), 4);
+}
+
+}  // namespace
+}  // namespace termshade
+
+namespace termshade {
+namespace {
+
+// A textured sphere of 200k triangles: u around, red west and blue east.
+TEST(TextureLevelOfDetail, LevelsTakeTheirColoursFromTheTexture) {
+  Mesh mesh = GenerateSphere(250, 400);
+  mesh.textures = {"halves.png"};
+  mesh.textureImages = {HalvesTexture(64)};
+  mesh.faceTextures.assign(mesh.FaceCount(), 0);
+  mesh.faceColors.assign(mesh.FaceCount(), Rgb{1, 1, 1});
+  for (const uint32_t corner : mesh.faceCorners) {
+    const Vec3 p = mesh.verticesFile[corner];
+    const double u = std::atan2(p.y, p.x) / (2 * std::numbers::pi) + 0.5;
+    mesh.cornerUvs.push_back({static_cast<float>(u), 0.5F});
+  }
+  const Scene exact = PrepareScene(std::move(mesh));
+  const DetailLevels levels = BuildDetailLevels(exact);
+  ASSERT_FALSE(levels.levels.empty());
+  for (const DetailLevel& level : levels.levels) {
+    int red = 0, blue = 0;
+    for (size_t f = 0; f < level.scene.FaceCount(); ++f) {
+      const Rgb c = level.scene.source.faceColors[f];
+      // Away from the seams (u near 0, 0.5, 1) and the poles, each face is one colour.
+      const auto& v = level.scene.triangles[f].vertices;
+      const Vec3 p = (level.scene.verticesWorld[v[0]] + level.scene.verticesWorld[v[1]] +
+                      level.scene.verticesWorld[v[2]]) *
+                     (1.0 / 3.0);
+      if (std::fabs(p.z) > 0.5 * Length(p)) continue;
+      const double u = std::atan2(p.y, p.x) / (2 * std::numbers::pi) + 0.5;
+      if (std::fabs(u - 0.25) < 0.1) {
+        EXPECT_TRUE(c.r > 0.9F && c.b < 0.1F) << u << ": " << c.r << " " << c.b;
+        ++red;
+      }
+      if (std::fabs(u - 0.75) < 0.1) {
+        EXPECT_TRUE(c.b > 0.9F && c.r < 0.1F) << u << ": " << c.r << " " << c.b;
+        ++blue;
+      }
+    }
+    EXPECT_GT(red, 10);
+    EXPECT_GT(blue, 10);
+  }
 }
 
 }  // namespace

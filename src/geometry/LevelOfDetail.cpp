@@ -3,6 +3,7 @@
 #include <meshoptimizer.h>
 
 #include "geometry/DuplicateTriangles.h"
+#include "geometry/FaceUv.h"
 #include "process/ChildWork.h"
 
 #include <algorithm>
@@ -83,6 +84,28 @@ std::pair<uint32_t, double> SourceFace(const Scene& exact, const Source& source,
   return {best, bestDot};
 }
 
+// A level triangle's colour: its source face's, or on a textured face the
+// texture at the triangle's centroid, on the texture level its size in texels
+// picks, times the face's colour (levels carry no textures: a colour a face).
+Rgb LevelColour(const Scene& exact, uint32_t sourceFace, Vec3 a, Vec3 b, Vec3 c) {
+  const Rgb faceColour = exact.source.faceColors[sourceFace];
+  const TextureLevels* texture = exact.textures.FaceTexture(sourceFace);
+  if (texture == nullptr) return faceColour;
+  const std::array<std::array<double, 2>, 3> uvs{FaceUvAt(exact, sourceFace, a),
+                                                 FaceUvAt(exact, sourceFace, b),
+                                                 FaceUvAt(exact, sourceFace, c)};
+  double footprint = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const double du = (uvs[(k + 1) % 3][0] - uvs[k][0]) * texture->WidthTexels();
+    const double dv = (uvs[(k + 1) % 3][1] - uvs[k][1]) * texture->HeightTexels();
+    footprint = std::max(footprint, std::sqrt(du * du + dv * dv));
+  }
+  const Rgb texel = texture->Sample((uvs[0][0] + uvs[1][0] + uvs[2][0]) / 3.0,
+                                    (uvs[0][1] + uvs[1][1] + uvs[2][1]) / 3.0,
+                                    texture->LevelFor(footprint));
+  return Rgb{texel.r * faceColour.r, texel.g * faceColour.g, texel.b * faceColour.b};
+}
+
 // A scene of the simplified triangles (indices into the exact vertices): the
 // vertices they use, one face per triangle, the exact scene's frame and fit.
 DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const uint32_t> indices,
@@ -147,7 +170,7 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     scene.triangles.push_back({local});
     faces.corners.insert(faces.corners.end(), local.begin(), local.end());
     level.sourceFaces.push_back(sourceFace);
-    if (coloured) scene.source.faceColors.push_back(exact.source.faceColors[sourceFace]);
+    if (coloured) scene.source.faceColors.push_back(LevelColour(exact, sourceFace, a, b, c));
   }
   faces.faceCount = scene.triangles.size();
   scene.source.KeepVerticesFile(scene.upAxis, scene.verticesWorld, verticesFile);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/FaceUv.h"
 #include "raster/TextureDetail.h"
 #include "shade/CellColour.h"
 
@@ -30,39 +31,6 @@ FacePoint MeetPlane(const FrameView& view, const FacePlane& plane, double x, dou
   const double t = (plane.offset - Dot(plane.normal, view.eyeWorld)) / along;
   if (!std::isfinite(t)) return {};
   return {true, view.eyeWorld + t * dirWorld};
-}
-
-// Barycentric weights of p in triangle (a, b, c) about the normal.
-std::array<double, 3> Barycentric(Vec3 p, Vec3 a, Vec3 b, Vec3 c, Vec3 normal) {
-  const double whole = Dot(normal, Cross(b - a, c - a));
-  if (whole == 0.0 || !std::isfinite(whole)) return {1.0, 0.0, 0.0};
-  const double wa = Dot(normal, Cross(b - p, c - p)) / whole;
-  const double wb = Dot(normal, Cross(c - p, a - p)) / whole;
-  return {wa, wb, 1.0 - wa - wb};
-}
-
-// The texture coordinates at p on the face: from its triangle holding p (or nearest to it).
-std::array<double, 2> FaceUv(const Scene& scene, uint32_t face, Vec3 p) {
-  const FacePlane& plane = scene.facePlanesWorld[face];
-  double bestLeast = -std::numeric_limits<double>::infinity();
-  std::array<double, 2> best{0.0, 0.0};
-  const uint32_t end = scene.FaceTrianglesBegin(face + 1);
-  for (uint32_t t = scene.FaceTrianglesBegin(face); t < end; ++t) {
-    const auto& v = scene.triangles[t].vertices;
-    const auto w = Barycentric(p, scene.verticesWorld[v[0]], scene.verticesWorld[v[1]],
-                               scene.verticesWorld[v[2]], plane.normal);
-    const double least = std::min({w[0], w[1], w[2]});
-    if (!(least > bestLeast)) continue;
-    bestLeast = least;
-    best = {0.0, 0.0};
-    for (int k = 0; k < 3; ++k) {
-      const auto uv = scene.textures.UvAt(face, v[k]);
-      best[0] += w[k] * uv[0];
-      best[1] += w[k] * uv[1];
-    }
-    if (least >= 0.0) break;
-  }
-  return best;
 }
 
 uint32_t PackLinear(Rgb linear) {
@@ -98,13 +66,13 @@ Rgb TextureStage::SampleAlbedo(const Scene& scene, const FrameView& view, uint32
   // Step 1: the sample's point and its neighbours' on the face's plane.
   const FacePoint here = MeetPlane(view, plane, x, y);
   if (!here.hit) return texture.Sample(0.0, 0.0, texture.LevelCount() - 1);
-  const auto uv = FaceUv(scene, face, here.pWorld);
+  const auto uv = FaceUvAt(scene, face, here.pWorld);
   // Step 2: the footprint, in full-size texels, picks the level.
   double footprint = 0.0;
   for (const auto& [dx, dy] : {std::pair{1.0, 0.0}, std::pair{0.0, 1.0}}) {
     const FacePoint next = MeetPlane(view, plane, x + dx, y + dy);
     if (!next.hit) continue;
-    const auto uvNext = FaceUv(scene, face, next.pWorld);
+    const auto uvNext = FaceUvAt(scene, face, next.pWorld);
     const double du = (uvNext[0] - uv[0]) * texture.WidthTexels();
     const double dv = (uvNext[1] - uv[1]) * texture.HeightTexels();
     footprint = std::max(footprint, std::sqrt(du * du + dv * dv));
