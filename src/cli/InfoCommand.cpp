@@ -58,7 +58,8 @@ std::vector<std::string> TextureStates(const Mesh& mesh) {
     if (i >= mesh.textureImages.size()) {
       states.emplace_back("not drawn: no face has coordinates into it");
     } else if (const TextureImage& image = mesh.textureImages[i]; image.Decoded()) {
-      states.push_back("drawn, " + std::to_string(image.widthTexels) + " x " +
+      states.push_back((image.readAs.empty() ? "" : "read as " + image.readAs + ", ") + "drawn, " +
+                       std::to_string(image.widthTexels) + " x " +
                        std::to_string(image.heightTexels) + " texels");
     } else {
       states.push_back("not drawn: " + image.problem);

@@ -17,6 +17,9 @@ struct TextureImage {
   uint32_t heightTexels = 0;
   std::vector<uint8_t> srgbTexels;
   std::string problem;
+  /// Where it was read when not where its name says: the file's name in the
+  /// model's folder ("test.png" for "TEST.PNG", "wood.jpg" for "D:\art\wood.jpg").
+  std::string readAs;
 
   bool Decoded() const { return widthTexels > 0 && heightTexels > 0; }
 };

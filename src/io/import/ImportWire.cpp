@@ -36,7 +36,8 @@ bool PutTextureImages(const std::vector<TextureImage>& images, const WireSink& s
   if (!PutValue<uint64_t>(images.size(), sink)) return false;
   for (const TextureImage& image : images) {
     if (!PutValue(image.widthTexels, sink) || !PutValue(image.heightTexels, sink) ||
-        !PutArray(image.srgbTexels, sink) || !PutString(image.problem, sink)) {
+        !PutArray(image.srgbTexels, sink) || !PutString(image.problem, sink) ||
+        !PutString(image.readAs, sink)) {
       return false;
     }
   }
@@ -79,7 +80,8 @@ bool ReadTextureImages(WireReader& reader, size_t textureCount, std::vector<Text
     if (image.widthTexels > kMaxTextureSideTexels || image.heightTexels > kMaxTextureSideTexels) {
       return reader.Refuse("a texture image larger than allowed");
     }
-    if (!reader.Array(image.srgbTexels) || !reader.String(image.problem, kMaxTextBytes)) {
+    if (!reader.Array(image.srgbTexels) || !reader.String(image.problem, kMaxTextBytes) ||
+        !reader.String(image.readAs, kMaxTextureNameBytes)) {
       return false;
     }
     if (image.srgbTexels.size() != size_t{image.widthTexels} * image.heightTexels * 3) {

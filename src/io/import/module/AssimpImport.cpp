@@ -248,9 +248,21 @@ void DecodeTextures(const aiScene& scene, ConfinedIOSystem& files, size_t memory
     } else {
       std::string path = name;
       std::replace(path.begin(), path.end(), '\\', '/');  // names written on Windows
-      Loaded<std::string> bytes = files.ReadReference(path);
+      std::string readAs;
+      Loaded<std::string> bytes = files.ReadReference(path, &readAs);
+      // A path from the author's machine ("D:/art/wood.jpg"): the file beside the model.
+      if (const size_t slash = path.rfind('/');
+          !bytes.Ok() && slash != std::string::npos && slash + 1 < path.size()) {
+        readAs = path.substr(slash + 1);
+        if (Loaded<std::string> beside = files.ReadReference(readAs, &readAs); beside.Ok()) {
+          bytes = std::move(beside);
+        } else {
+          readAs.clear();
+        }
+      }
       image = bytes.Ok() ? DecodeTexture(bytes.Value(), bytesLeft)
-                         : TextureImage{0, 0, {}, bytes.Error().message};
+                         : TextureImage{0, 0, {}, bytes.Error().message, {}};
+      if (bytes.Ok()) image.readAs = readAs;
     }
     bytesLeft -= std::min(bytesLeft, image.srgbTexels.size());
     mesh.textureImages.push_back(std::move(image));

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <assimp/IOStream.hpp>
 #include <cstring>
 #include <filesystem>
@@ -54,6 +55,32 @@ class BytesStream : public Assimp::IOStream {
   const std::atomic<bool>* cancel_;
   size_t position_ = 0;
 };
+
+// A file written "TEST.PNG" that is "test.png" on disk (names from Windows
+// tools): the one entry of its folder equal to it but for case, if exactly one.
+bool MatchCaseInsensitively(std::string& path) {
+  const std::filesystem::path wanted(path);
+  std::error_code error;
+  std::filesystem::directory_iterator entries(wanted.parent_path(), error);
+  if (error) return false;
+  const auto lower = [](std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+  };
+  const std::string name = lower(wanted.filename().string());
+  std::string found;
+  int matches = 0, seen = 0;
+  for (const auto& entry : entries) {
+    if (++seen > 100000) return false;  // a folder this big is not searched
+    if (lower(entry.path().filename().string()) == name) {
+      found = entry.path().string();
+      ++matches;
+    }
+  }
+  if (matches != 1) return false;
+  path = found;
+  return true;
+}
 
 bool IsInside(const std::string& path, const std::string& folder) {
   if (folder == "/") return true;
@@ -171,14 +198,17 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
   return new BytesStream(std::make_shared<const std::string>(std::move(bytes.Value())), cancel_);
 }
 
-Loaded<std::string> ConfinedIOSystem::ReadReference(const std::string& name) {
+Loaded<std::string> ConfinedIOSystem::ReadReference(const std::string& name, std::string* readAs) {
   const auto refuse = [&name](const std::string& reason) {
     return LoadError{name, 0, 0, reason};
   };
   std::string resolved, reason;
   if (!Resolve(name, resolved, reason)) return refuse(reason);
   struct stat info {};
-  if (stat(resolved.c_str(), &info) != 0) return refuse("no such file in the model's folder");
+  if (stat(resolved.c_str(), &info) != 0) {
+    if (!MatchCaseInsensitively(resolved)) return refuse("no such file in the model's folder");
+    if (readAs != nullptr) *readAs = std::filesystem::path(resolved).filename().string();
+  }
   const auto refuseSize = [this](size_t size) -> std::optional<std::string> {
     if (size <= bytesLeft_) return std::nullopt;
     return "it is " + FormatBytes(static_cast<double>(size)) +

@@ -33,7 +33,9 @@ class ConfinedIOSystem : public Assimp::IOSystem {
   /// The bytes of a file a model refers to (a texture) by the same rules,
   /// without failing the import: an error with the reason when it is refused
   /// or missing. Counts against the same bytes.
-  Loaded<std::string> ReadReference(const std::string& name);
+  /// A name that differs from the file's only by case is read as that file
+  /// (its name in `readAs`).
+  Loaded<std::string> ReadReference(const std::string& name, std::string* readAs = nullptr);
 
   /// Why the first refused reference was refused ("'../x.bin' leaves the model's folder").
   const std::optional<std::string>& Refusal() const { return refusal_; }
