@@ -15,6 +15,7 @@
 #include "shade/BlockGlyphs.h"
 #include "shade/GlyphInk.h"
 #include "shade/OrderedDither.h"
+#include "shade/ShadeGlyph.h"
 #include "support/TestSupport.h"
 
 namespace termshade {
@@ -111,7 +112,9 @@ TEST(GlyphInkTables, SortedAndHoldingPrintableAscii) {
 
 // Without colour the pattern modes dither: a covered sample is inked where
 // its shade exceeds the screen-fixed threshold there, and a covered cell
-// keeps at least one sample (its lowest threshold's) inked.
+// keeps at least one sample (its lowest threshold's) inked. In blocks,
+// quadrants and sextants a cell whose samples are all covered is instead the
+// shade glyph of their mean shade.
 TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
   for (const std::string& name : GeneratedSceneNames()) {
     const Scene scene = test::LoadScene("data/" + name + ".dat");
@@ -128,7 +131,8 @@ TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
       DepthBuffer fineDepth;
       fineDepth.Resize(fine.WidthCells(), fine.HeightCells());
       Renderer().Render(scene, SampleCamera(frame.camera, frame.grid), single, fineDepth, fine);
-      int partlyInked = 0;
+      int partlyInked = 0, shaded = 0;
+      const SamplePattern all = (SamplePattern{1} << frame.grid.Count()) - 1;
       for (int row = 0; row < 20; ++row) {
         for (int col = 0; col < 60; ++col) {
           const SamplePattern covered = CoverageOfCell(frame.samples, frame.grid, col, row);
@@ -139,6 +143,16 @@ TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
             ASSERT_EQ(fine.FaceNumber(x, y), frame.samples.FaceNumber(x, y));
             values[n] = fine.Intensity(x, y);
           }
+          if (mode != GlyphMode::kBraille && covered == all) {
+            int sum = 0;
+            for (int n = 0; n < frame.grid.Count(); ++n) sum += values[n];
+            const int count = frame.grid.Count();
+            ASSERT_EQ(frame.cells.Glyph(col, row),
+                      ShadeGlyph(static_cast<uint8_t>((sum + count / 2) / count)))
+                << name << " " << GlyphModeName(mode) << " cell " << col << "," << row;
+            ++shaded;
+            continue;
+          }
           const SamplePattern shown = PatternOfGlyph(frame.cells.Glyph(col, row), frame.grid);
           ASSERT_EQ(shown, dither.CellInk(values.data(), covered, frame.grid, col, row))
               << name << " " << GlyphModeName(mode) << " cell " << col << "," << row;
@@ -147,7 +161,9 @@ TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
           partlyInked += shown != covered ? 1 : 0;
         }
       }
-      EXPECT_GT(partlyInked, 0) << name << " " << GlyphModeName(mode);
+      // (A half block's silhouette cell has one covered sample, always inked.)
+      EXPECT_EQ(partlyInked > 0, mode != GlyphMode::kBlocks) << name << " " << GlyphModeName(mode);
+      EXPECT_EQ(shaded > 0, mode != GlyphMode::kBraille) << name << " " << GlyphModeName(mode);
     }
   }
 }

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "raster/FramePlan.h"
@@ -117,38 +118,76 @@ int InkedSamples(GlyphMode mode, char32_t glyph) {
   return -1;
 }
 
-TEST(GlyphStageMono, HalfShadeIsACheckerboard) {
+TEST(GlyphStageMono, HalfShadeIsACheckerboardOrMediumShade) {
   for (GlyphMode mode : kPatternModes) {
     const CellBuffer cells = MonoFrame(mode, 128);
     const int perCell = ModeSampleGrid(mode).Count();
     for (int row = 0; row < kRows; ++row) {
       for (int col = 0; col < kCols; ++col) {
-        ASSERT_EQ(InkedSamples(mode, cells.Glyph(col, row)), perCell / 2)
-            << GlyphModeName(mode) << " " << col << "," << row;
-        if (mode == GlyphMode::kQuadrants) {
-          ASSERT_EQ(cells.Glyph(col, row), U'\u259A');
-        }
-        if (mode == GlyphMode::kBlocks) {  // upper and lower halves alternate by column
-          ASSERT_EQ(cells.Glyph(col, row), col % 2 == 0 ? U'\u2580' : U'\u2584');
+        if (mode == GlyphMode::kBraille) {  // half the dots, in a checkerboard
+          ASSERT_EQ(InkedSamples(mode, cells.Glyph(col, row)), perCell / 2) << col << "," << row;
+          ASSERT_EQ(cells.Glyph(col, row), U'\u2895');  // dots 1, 3, 5, 8
+        } else {  // a covered cell of the block modes: medium shade
+          ASSERT_EQ(cells.Glyph(col, row), U'\u2592') << GlyphModeName(mode);
         }
       }
     }
   }
 }
 
-TEST(GlyphStageMono, FullShadeIsFullCellsAndNoShadeTheFaintestPattern) {
-  for (GlyphMode mode : kPatternModes) {
-    const int perCell = ModeSampleGrid(mode).Count();
-    const CellBuffer full = MonoFrame(mode, 255);
-    const CellBuffer none = MonoFrame(mode, 0);
-    for (int row = 0; row < kRows; ++row) {
-      for (int col = 0; col < kCols; ++col) {
-        ASSERT_EQ(InkedSamples(mode, full.Glyph(col, row)), perCell) << GlyphModeName(mode);
-        ASSERT_EQ(InkedSamples(mode, none.Glyph(col, row)), 1) << GlyphModeName(mode);
-        // The tones are the covered samples' whatever the ink.
-        ASSERT_EQ(none.FaceNumber(col, row), 1U);
-        ASSERT_EQ(full.Intensity(col, row), 255);
+TEST(GlyphStageMono, CoveredBlockCellsAreTheNearestShadeGlyph) {
+  const std::pair<int, char32_t> expected[] = {{0, U'\u2591'},   {95, U'\u2591'},  {96, U'\u2592'},
+                                               {159, U'\u2592'}, {160, U'\u2593'}, {223, U'\u2593'},
+                                               {224, U'\u2588'}, {255, U'\u2588'}};
+  for (GlyphMode mode : {GlyphMode::kBlocks, GlyphMode::kQuadrants, GlyphMode::kSextants}) {
+    for (const auto& [intensity, glyph] : expected) {
+      const CellBuffer cells = MonoFrame(mode, static_cast<uint8_t>(intensity));
+      for (int row = 0; row < kRows; ++row) {
+        for (int col = 0; col < kCols; ++col) {
+          ASSERT_EQ(cells.Glyph(col, row), glyph) << GlyphModeName(mode) << " " << intensity;
+          // The tones are the covered samples' whatever the glyph.
+          ASSERT_EQ(cells.FaceNumber(col, row), 1U);
+          ASSERT_EQ(cells.Intensity(col, row), intensity);
+        }
       }
+    }
+  }
+}
+
+TEST(GlyphStageMono, FullBrailleIsAllDotsAndNoShadeOneDot) {
+  const CellBuffer full = MonoFrame(GlyphMode::kBraille, 255);
+  const CellBuffer none = MonoFrame(GlyphMode::kBraille, 0);
+  for (int row = 0; row < kRows; ++row) {
+    for (int col = 0; col < kCols; ++col) {
+      ASSERT_EQ(InkedSamples(GlyphMode::kBraille, full.Glyph(col, row)), 8);
+      ASSERT_EQ(InkedSamples(GlyphMode::kBraille, none.Glyph(col, row)), 1);
+      ASSERT_EQ(none.FaceNumber(col, row), 1U);
+      ASSERT_EQ(full.Intensity(col, row), 255);
+    }
+  }
+}
+
+// A silhouette cell (some samples background) stays a dithered pattern of
+// its covered samples, never blank and never a shade glyph.
+TEST(GlyphStageMono, SilhouetteCellsStayDithered) {
+  for (GlyphMode mode : kPatternModes) {
+    for (int v : {0, 128, 255}) {
+      RenderOptions options;
+      options.glyphs = mode;
+      options.twoColour = false;
+      const GlyphPlan plan = PlanGlyphs(options);
+      SampleFrame frame;
+      frame.Begin(1, 1, plan.pattern);
+      frame.Touch(0);
+      frame.FaceData()[0] = 1;  // the first sample alone covered
+      frame.DepthData()[0] = 0.5F;
+      const std::vector<uint8_t> intensities(1, static_cast<uint8_t>(v));
+      CellBuffer cells(1, 1);
+      DepthBuffer depth;
+      depth.Resize(1, 1);
+      GlyphStage stage;
+      stage.Compose({frame, intensities}, plan, cells, depth);
+      EXPECT_EQ(cells.Glyph(0, 0), PatternGlyph(mode, 1)) << GlyphModeName(mode) << " " << v;
     }
   }
 }
@@ -169,7 +208,7 @@ TEST(GlyphStageMono, ACellKeepsItsGlyphWhenTheModelMovesUnderIt) {
   }
 }
 
-TEST(GlyphStageMono, OnlyTheMonoPatternModesDither) {
+TEST(GlyphStageMono, OnlyTheMonoPatternModesDitherAndOnlyTheirBlockModesShade) {
   for (int m = 0; m < kGlyphModeCount; ++m) {
     for (bool colour : {false, true}) {
       RenderOptions options;
@@ -178,6 +217,9 @@ TEST(GlyphStageMono, OnlyTheMonoPatternModesDither) {
       const bool pattern =
           options.glyphs != GlyphMode::kRamp && options.glyphs != GlyphMode::kAscii;
       EXPECT_EQ(PlanGlyphs(options).ditherOrder != 0, pattern && !colour)
+          << GlyphModeName(options.glyphs) << colour;
+      EXPECT_EQ(PlanGlyphs(options).shadeGlyphs,
+                pattern && !colour && options.glyphs != GlyphMode::kBraille)
           << GlyphModeName(options.glyphs) << colour;
     }
   }

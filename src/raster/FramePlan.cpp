@@ -13,6 +13,15 @@ namespace {
 // docs/glyphs-and-fidelity.md#shade-without-colour-ordered-dither).
 constexpr int kMonoDitherOrder = 1;
 
+// The mono modes whose covered cells are shade glyphs: not braille, whose
+// dots ink about a quarter of the cell at most (a light shade would outshine
+// a full braille cell).
+bool ShadesWithGlyphs(const RenderOptions& options) {
+  const GlyphMode mode = options.glyphs;
+  return !options.twoColour && (mode == GlyphMode::kBlocks || mode == GlyphMode::kQuadrants ||
+                                mode == GlyphMode::kSextants);
+}
+
 // The near plane sits a tiny, scale-relative distance in front of the eye.
 double NearDistance(const Scene& scene) {
   return 1e-6 * (scene.diagonalModelUnits > 0.0 ? scene.diagonalModelUnits : 1.0);
@@ -102,6 +111,7 @@ GlyphPlan PlanGlyphs(const RenderOptions& options) {
           .ramp = &options.ramp,
           .pattern = PatternSampleGrid(options),
           .ditherOrder = patterned && !options.twoColour ? kMonoDitherOrder : 0,
+          .shadeGlyphs = ShadesWithGlyphs(options),
           .writeDepth = options.keepDepth};
 }
 

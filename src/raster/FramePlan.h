@@ -80,6 +80,10 @@ struct GlyphPlan {
   /// exceeds the threshold of a Bayer matrix of side 2^ditherOrder at its
   /// screen position (OrderedDither); 0: every covered part is inked.
   int ditherOrder = 0;
+  /// Without colour (blocks, quadrants, sextants), a cell whose parts are all
+  /// covered is the shade glyph of its covered parts' mean shade (ShadeGlyph)
+  /// instead of a dithered pattern; cells on the silhouette stay dithered.
+  bool shadeGlyphs = false;
   bool writeDepth = true;  ///< a cell's depth is its nearest sample's
 };
 

@@ -8,6 +8,7 @@
 #endif
 
 #include "shade/BlockGlyphs.h"
+#include "shade/ShadeGlyph.h"
 
 namespace termshade {
 namespace {
@@ -240,8 +241,11 @@ struct CellPlace {
 };
 
 // The glyph of a pattern mode without colour: the ordered dither of the
-// covered samples' (or parts') shades.
-char32_t DitheredGlyph(const CellSamples& s, const GlyphPlan& plan, const CellPlace& place) {
+// covered samples' (or parts') shades; with plan.shadeGlyphs, a cell every
+// part of which is covered shows the shade glyph of its mean shade instead.
+char32_t DitheredGlyph(const CellSamples& s, const GlyphPlan& plan, const CellPlace& place,
+                       uint8_t meanShade) {
+  if (plan.shadeGlyphs && s.covered == LowBits(plan.pattern.Count())) return ShadeGlyph(meanShade);
   return PatternGlyph(plan.mode, place.dither.CellInk(s.values.data(), s.covered, plan.pattern,
                                                       place.col, place.row));
 }
@@ -261,14 +265,16 @@ char32_t MixedCell(const CellSamples& s, const GlyphPlan& plan, SamplePattern al
                             : ascii.MatchInk(s.values.data(), s.covered);
     case GlyphMode::kBraille:
       fore = ToneOf<N>(s, s.covered);
-      return plan.ditherOrder != 0 ? DitheredGlyph(s, plan, place) : PatternGlyph(mode, s.covered);
+      return plan.ditherOrder != 0 ? DitheredGlyph(s, plan, place, fore.intensity)
+                                   : PatternGlyph(mode, s.covered);
     default: {  // blocks, quadrants, sextants
       SamplePattern ink = s.covered;
       if (plan.twoColour) ink = BrighterHalf<N>(s);
       if (ink == 0) ink = all;
       fore = ToneOf<N>(s, ink);
       if (plan.twoColour) back = ToneOf<N>(s, all & ~ink);
-      return plan.ditherOrder != 0 ? DitheredGlyph(s, plan, place) : PatternGlyph(mode, ink);
+      return plan.ditherOrder != 0 ? DitheredGlyph(s, plan, place, fore.intensity)
+                                   : PatternGlyph(mode, ink);
     }
   }
 }
@@ -361,7 +367,7 @@ void GlyphStage::ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffe
         default:
           if (plan.ditherOrder != 0) {
             fine.covered = all;  // one face: every part covered, every shade the same
-            glyph = DitheredGlyph(fine, plan, place);
+            glyph = DitheredGlyph(fine, plan, place, fore.intensity);
           } else {
             glyph = PatternGlyph(mode, all);
           }

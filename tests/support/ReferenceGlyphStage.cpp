@@ -6,6 +6,7 @@
 
 #include "shade/BlockGlyphs.h"
 #include "shade/OrderedDither.h"
+#include "shade/ShadeGlyph.h"
 
 namespace termshade {
 namespace {
@@ -185,6 +186,17 @@ SamplePattern DitheredInk(const CellSamples& s, SampleGrid pattern, const Ordere
   return ink != 0 ? ink : lowest;
 }
 
+// The rounded mean shade of the covered samples (or parts).
+uint8_t MeanOfCovered(const CellSamples& s) {
+  int sum = 0, count = 0;
+  for (int n = 0; n < s.count; ++n) {
+    if (((s.covered >> n) & 1U) == 0) continue;
+    sum += s.values[n];
+    ++count;
+  }
+  return static_cast<uint8_t>(count == 0 ? 0 : (sum + count / 2) / count);
+}
+
 }  // namespace
 
 void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan& plan,
@@ -277,6 +289,7 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan
           const OrderedDither dither(plan.ditherOrder);
           glyph = PatternGlyph(mode, DitheredInk(s, plan.pattern, dither, col, row));
         }
+        if (plan.shadeGlyphs && s.covered == all) glyph = ShadeGlyph(MeanOfCovered(s));
         break;
     }
     cells.Glyphs()[index] = glyph;
