@@ -25,7 +25,7 @@ constexpr Srgb8 kBlue{0, 0, 255};
 // A texture red left of `splitTexels` (default: half) and blue right of it.
 TextureImage HalvesTexture(uint32_t side, uint32_t splitTexels = 0) {
   if (splitTexels == 0) splitTexels = side / 2;
-  TextureImage image{side, side, {}, {}};
+  TextureImage image{side, side, {}, {}, {}};
   for (uint32_t y = 0; y < side; ++y) {
     for (uint32_t x = 0; x < side; ++x) {
       const Srgb8 c = x < splitTexels ? kRed : kBlue;

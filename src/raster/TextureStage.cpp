@@ -60,16 +60,17 @@ struct AlbedoSums {
 }  // namespace
 
 Rgb TextureStage::SampleAlbedo(const Scene& scene, const FrameView& view, uint32_t face, double x,
-                               double y) const {
+                               double y, int& level) const {
   const TextureLevels& texture = *scene.textures.FaceTexture(face);
   const FacePlane& plane = scene.facePlanesWorld[face];
   // Step 1: the sample's point and its neighbours' on the face's plane.
   const FacePoint here = MeetPlane(view, plane, x, y);
   if (!here.hit) return texture.Sample(0.0, 0.0, texture.LevelCount() - 1);
   const auto uv = FaceUvAt(scene, face, here.pWorld);
-  // Step 2: the footprint, in full-size texels, picks the level.
+  // Step 2: the footprint, in full-size texels, picks the level (once a cell and face).
   double footprint = 0.0;
   for (const auto& [dx, dy] : {std::pair{1.0, 0.0}, std::pair{0.0, 1.0}}) {
+    if (level >= 0) break;
     const FacePoint next = MeetPlane(view, plane, x + dx, y + dy);
     if (!next.hit) continue;
     const auto uvNext = FaceUvAt(scene, face, next.pWorld);
@@ -77,7 +78,8 @@ Rgb TextureStage::SampleAlbedo(const Scene& scene, const FrameView& view, uint32
     const double dv = (uvNext[1] - uv[1]) * texture.HeightTexels();
     footprint = std::max(footprint, std::sqrt(du * du + dv * dv));
   }
-  Rgb texel = texture.Sample(uv[0], uv[1], texture.LevelFor(footprint));
+  if (level < 0) level = texture.LevelFor(footprint);
+  Rgb texel = texture.Sample(uv[0], uv[1], level);
   // Step 3: times the face's colour (glTF's base colour factor).
   if (!scene.source.faceColors.empty()) {
     const Rgb factor = scene.source.faceColors[face];
@@ -92,8 +94,9 @@ void TextureStage::Apply(const Scene& scene, const FrameView& view, CellBuffer& 
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const uint32_t face = cells.FaceNumber(col, row);
       if (face == 0 || scene.textures.FaceTexture(face - 1) == nullptr) continue;
+      int level = -1;
       cells.ForeAlbedos()[cells.Index(col, row)] =
-          PackLinear(SampleAlbedo(scene, view, face - 1, col + 0.5, row + 0.5));
+          PackLinear(SampleAlbedo(scene, view, face - 1, col + 0.5, row + 0.5, level));
     }
   }
 }
@@ -119,12 +122,15 @@ void TextureStage::Apply(const Scene& scene, const FrameView& view, const Sample
       const auto faces = samples.frame.Faces(cell);
       if (std::none_of(faces.begin(), faces.end(), textured)) continue;
       albedos_.assign(faces.size(), Rgb{});
+      uint32_t levelFace = 0;
+      int level = -1;
       for (size_t n = 0; n < faces.size(); ++n) {
         const uint32_t face = faces[n];
         if (textured(face)) {
+          if (face != levelFace) levelFace = face, level = -1;
           const double x = col * grid.across + static_cast<double>(n % grid.across) + 0.5;
           const double y = row * grid.down + static_cast<double>(n / grid.across) + 0.5;
-          albedos_[n] = SampleAlbedo(scene, view, face - 1, x, y);
+          albedos_[n] = SampleAlbedo(scene, view, face - 1, x, y, level);
         } else if (face != 0) {
           albedos_[n] = face <= faceColours.size() ? faceColours[face - 1] : kDefaultFaceColour;
         }
