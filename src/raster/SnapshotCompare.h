@@ -46,11 +46,24 @@ struct SnapshotDifference {
   int64_t shadeSamples = 0;      ///< counted samples whose face is the same (a shade change)
   std::vector<uint8_t> counted;  ///< per sample, 1 where counted (empty: sizes differ)
   bool sizesDiffer = false;      ///< the grids differ in size: every sample counts
+  /// Texture colours, where the golden has them: cells textured in either,
+  /// and those whose colour is gone, new, or off by more than kTextureColourStep.
+  int64_t texturedCells = 0;
+  int64_t textureCells = 0;
 
   bool Within(const SnapshotTolerance& tolerance) const {
-    return !sizesDiffer && countedSamples <= tolerance.AllowedSamples(modelSamples);
+    return !sizesDiffer && countedSamples <= tolerance.AllowedSamples(modelSamples) &&
+           textureCells <= tolerance.AllowedSamples(texturedCells);
   }
 };
+
+/// Two texture colours of a cell look alike within this many sRGB steps a channel.
+constexpr int kTextureColourStep = 12;
+
+/// Counts the cells whose texture colours differ (SnapshotDifference's texture
+/// fields); nothing when the golden has none (a golden made before textures).
+void CompareTextureColours(const std::vector<uint32_t>& golden, const std::vector<uint32_t>& actual,
+                           SnapshotDifference& difference);
 
 SnapshotDifference CompareSnapshotSamples(const SnapshotSamples& golden,
                                           const SnapshotSamples& actual);

@@ -6,6 +6,27 @@
 #include "raster/Renderer.h"
 
 namespace termshade {
+namespace {
+
+// Each cell's texture colour at its center: a ramp frame with colours shown.
+std::vector<uint32_t> TextureColours(const Scene& scene, const Camera& camera, int width,
+                                     int height, const RenderOptions& frameOptions) {
+  RenderOptions options = frameOptions;
+  options.glyphs = GlyphMode::kRamp;
+  options.twoColour = true;
+  options.textures = true;
+  CellBuffer cells(width, height);
+  DepthBuffer depth;
+  depth.Resize(width, height);
+  Renderer().Render(scene, camera, options, depth, cells);
+  std::vector<uint32_t> colours(static_cast<size_t>(width) * height, 0U);
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) colours[cells.Index(col, row)] = cells.ForeAlbedo(col, row);
+  }
+  return colours;
+}
+
+}  // namespace
 
 RenderOptions SnapshotSettings::FrameOptions() const {
   RenderOptions options;
@@ -41,6 +62,8 @@ std::vector<SnapshotFrame> RenderSnapshot(const Scene& scene, const SnapshotSett
       frame.textRows.push_back(cells.RowText(row));
     frame.samples = ProbeSnapshotSamples(renderer, scene, camera, settings.widthCells,
                                          settings.heightCells, settings.samples, options);
+    if (scene.textures.Any()) frame.textureColours = TextureColours(scene, camera, settings.widthCells,
+                                                                settings.heightCells, options);
     frames.push_back(std::move(frame));
   }
   return frames;

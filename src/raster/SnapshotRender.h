@@ -36,6 +36,9 @@ struct SnapshotFrame {
   SnapshotView view;
   std::vector<std::string> textRows;  ///< UTF-8, widthCells characters each
   SnapshotSamples samples;
+  /// Per cell (row-major), the texture's colour at its center as PackAlbedo
+  /// keeps it (0: no texture there); empty when the model has no textures.
+  std::vector<uint32_t> textureColours;
 };
 
 /// The frames of every view in settings.views (names from SnapshotViewNames;

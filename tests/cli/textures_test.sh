@@ -65,6 +65,28 @@ expect outside_not_read grep -q 'not drawn: a path that leaves the model.s folde
 check outside_render 0 "" -- "$bin" render "$work/sub/outside.obj" "${view[@]}"
 expect outside_never_green bash -c "! grep -q '38;2;0;[0-9]*;0m' '$work/out'"
 
+# Snapshots compare the texture's colours too: the same texture matches, a
+# changed one (its halves swapped) or a missing one fails with the count.
+golden="$work/halves.snapshot"
+check snapshot_update 0 "wrote" -- "$bin" render "$work/sub/halves.obj" --expect "$golden" --update
+expect snapshot_records_textures grep -q '^textures 80x24$' "$golden"
+check snapshot_same_texture 0 "" -- "$bin" render "$work/sub/halves.obj" --expect "$golden"
+cp "$work/sub/halves.png" "$work/halves.png.saved"
+python3 - "$work/sub/halves.png" <<'PY'
+import struct, sys, zlib
+raw = b"".join(b"\0" + b"".join(bytes((0, 0, 255) if x < 4 else (255, 0, 0)) for x in range(8)) for y in range(8))
+def chunk(t, d):
+    return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 8, 8, 8, 2, 0, 0, 0)) +
+                              chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+PY
+check snapshot_changed_texture 1 "texture colours:" -- "$bin" render "$work/sub/halves.obj" --expect "$golden"
+expect snapshot_changed_names_count grep -qE 'texture colours: [1-9][0-9]* cells? of [0-9]+ differ' "$work/err"
+rm "$work/sub/halves.png"
+check snapshot_missing_texture 1 "texture colours:" -- "$bin" render "$work/sub/halves.obj" --expect "$golden"
+cp "$work/halves.png.saved" "$work/sub/halves.png"
+check snapshot_restored_texture 0 "" -- "$bin" render "$work/sub/halves.obj" --expect "$golden"
+
 # The Collada duck (its texture duckCM.tga): yellow, not grey.
 duck=/usr/share/assimp/models/Collada/duck.dae
 if [ -f "$duck" ]; then

@@ -210,11 +210,56 @@ class GoldenParser {
       }
       frame.textRows.emplace_back(text);
     }
-    ParseSamples(frame.samples);
+    std::string_view after = ParseSamples(frame.samples);
+    if (after.starts_with("textures ")) {
+      ParseTextureColours(after, frame.textureColours);
+      if (!lines_.Next(after)) after = {};
+    }
+    if (!after.empty() && !after.starts_with("#")) {
+      Fail("expected a blank line after the shades (or the texture colours)");
+    }
     golden_.frames.push_back(std::move(frame));
   }
 
-  void ParseSamples(SnapshotSamples& samples) {
+  // `textures WxH` (the frame's size), then a line a row: RRGGBB or - runs, or `=`.
+  void ParseTextureColours(std::string_view head, std::vector<uint32_t>& colours) {
+    const SnapshotSettings& s = golden_.settings;
+    const int width = s.widthCells, height = s.heightCells;
+    if (head != "textures " + std::to_string(width) + "x" + std::to_string(height)) {
+      Fail("expected `textures " + std::to_string(width) + "x" + std::to_string(height) + "`");
+    }
+    colours.reserve(static_cast<size_t>(width) * height);
+    std::string_view line;
+    for (int y = 0; y < height; ++y) {
+      if (!lines_.Next(line)) Fail("the file ends inside the texture colours");
+      if (line == "=") {
+        if (y == 0) Fail("`=` repeats the row above; the first row has none");
+        colours.insert(colours.end(), colours.end() - width, colours.end());
+        continue;
+      }
+      int64_t count = 0;
+      for (const std::string_view token : Words(line)) {
+        const size_t star = token.find('*');
+        const std::string_view value = token.substr(0, star);
+        const auto run = star == std::string_view::npos ? std::optional<int>(1)
+                                                        : Number<int>(token.substr(star + 1));
+        uint32_t rgb = 0;
+        const bool hex = value.size() == 6 &&
+                         std::from_chars(value.data(), value.data() + 6, rgb, 16).ptr ==
+                             value.data() + 6;
+        if ((value != "-" && !hex) || !run || *run < 1) {
+          Fail("a texture colour run must be RRGGBB or -, then *COUNT or nothing");
+        }
+        count += *run;
+        if (count > width) Fail("a texture row must hold " + std::to_string(width) + " cells");
+        colours.insert(colours.end(), static_cast<size_t>(*run), value == "-" ? 0U : rgb | 0x01000000U);
+      }
+      if (count != width) Fail("a texture row must hold " + std::to_string(width) + " cells");
+    }
+  }
+
+  // Returns the line after the shades (empty at the end of the file).
+  std::string_view ParseSamples(SnapshotSamples& samples) {
     const SnapshotSettings& s = golden_.settings;
     const int width = s.widthCells * s.samples.across, height = s.heightCells * s.samples.down;
     std::string_view line;
@@ -260,9 +305,7 @@ class GoldenParser {
         shades[*face] = static_cast<uint8_t>(shade);
       }
     }
-    if (!line.empty() && !line.starts_with("shades ") && !line.starts_with("#")) {
-      Fail("expected a blank line after the shades");
-    }
+    if (line.starts_with("shades ")) line = {};  // the file ended after the shades
     samples.shades.resize(samples.faces.size());
     for (size_t i = 0; i < samples.faces.size(); ++i) {
       if (samples.faces[i] == 0) continue;
@@ -272,6 +315,7 @@ class GoldenParser {
       }
       samples.shades[i] = shade->second;
     }
+    return line;
   }
 
   LineCursor lines_;

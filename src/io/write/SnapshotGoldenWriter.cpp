@@ -1,6 +1,7 @@
 #include "io/write/SnapshotGoldenWriter.h"
 
 #include <charconv>
+#include <cstdio>
 #include <map>
 
 namespace termshade {
@@ -46,6 +47,34 @@ void AppendShades(const SnapshotSamples& samples, std::string& out) {
   if (onLine > 0) out += '\n';
 }
 
+// The cells' texture colours, a row a line: runs of RRGGBB (or - where no
+// texture shows) with *COUNT, `=` for a row like the one above.
+void AppendTextureColours(const std::vector<uint32_t>& colours, int widthCells, std::string& out) {
+  const int heightCells = static_cast<int>(colours.size()) / widthCells;
+  out += "textures " + std::to_string(widthCells) + "x" + std::to_string(heightCells) + "\n";
+  std::string previous, row;
+  for (int y = 0; y < heightCells; ++y) {
+    row.clear();
+    for (int x = 0; x < widthCells;) {
+      const uint32_t colour = colours[static_cast<size_t>(y) * widthCells + x];
+      int run = 1;
+      while (x + run < widthCells &&
+             colours[static_cast<size_t>(y) * widthCells + x + run] == colour) {
+        ++run;
+      }
+      if (!row.empty()) row += ' ';
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "%06x", colour & 0xFFFFFFU);
+      row += colour == 0 ? std::string("-") : std::string(hex);
+      if (run > 1) row += '*' + std::to_string(run);
+      x += run;
+    }
+    out += y > 0 && row == previous ? "=" : row;
+    out += '\n';
+    previous.swap(row);
+  }
+}
+
 }  // namespace
 
 std::string SnapshotNumber(double value) {
@@ -83,6 +112,7 @@ std::string FormatSnapshotGolden(const SnapshotGolden& golden) {
            std::to_string(frame.samples.heightSamples) + "\n";
     AppendSampleRows(frame.samples, out);
     AppendShades(frame.samples, out);
+    if (!frame.textureColours.empty()) AppendTextureColours(frame.textureColours, s.widthCells, out);
   }
   return out;
 }

@@ -41,7 +41,13 @@ std::string SnapshotReport(const SnapshotOutcome& outcome, const std::vector<Sna
              Plural(markedCells, "cell");
     }
     out += ", tolerance " + tolerance.ToString() + " (" +
-           Plural(tolerance.AllowedSamples(d.modelSamples), "sample") + "): ";
+           Plural(tolerance.AllowedSamples(d.modelSamples), "sample") + ")";
+    if (d.texturedCells > 0) {
+      out += "; texture colours: " + Plural(d.textureCells, "cell") + " of " +
+             std::to_string(d.texturedCells) + " differ (tolerance " +
+             Plural(tolerance.AllowedSamples(d.texturedCells), "cell") + ")";
+    }
+    out += ": ";
     out += view.within ? "matches" : "DIFFERS";
     if (d.edgeSamples + d.isolatedSamples > 0) {
       out += "; forgiven: " + std::to_string(d.edgeSamples) + " along edges moved by one sample, " +
