@@ -5,10 +5,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/FaceUv.h"
+#include "geometry/LevelOfDetail.h"
 #include "geometry/Projection.h"
 #include "geometry/Scene.h"
 #include "geometry/SrgbCoding.h"
-#include "geometry/LevelOfDetail.h"
 #include "geometry/TextureLevels.h"
 #include "geometry/ViewingTransform.h"
 #include "io/scenes/SceneGenerators.h"
@@ -236,7 +237,10 @@ TEST(TextureLevelOfDetail, LevelsTakeTheirColoursFromTheTexture) {
   for (const DetailLevel& level : levels.levels) {
     int red = 0, blue = 0;
     for (size_t f = 0; f < level.scene.FaceCount(); ++f) {
-      const Rgb c = level.scene.source.faceColors[f];
+      // The face colour stays the material's (textures off); the flat colour is the texture's.
+      EXPECT_EQ(level.scene.source.faceColors[f], (Rgb{1, 1, 1}));
+      ASSERT_EQ(level.scene.textures.flatColours.size(), level.scene.FaceCount());
+      const Rgb c = level.scene.textures.flatColours[f];
       // Away from the seams (u near 0, 0.5, 1) and the poles, each face is one colour.
       const auto& v = level.scene.triangles[f].vertices;
       const Vec3 p = (level.scene.verticesWorld[v[0]] + level.scene.verticesWorld[v[1]] +
@@ -255,6 +259,39 @@ TEST(TextureLevelOfDetail, LevelsTakeTheirColoursFromTheTexture) {
     }
     EXPECT_GT(red, 10);
     EXPECT_GT(blue, 10);
+  }
+}
+
+}  // namespace
+}  // namespace termshade
+
+namespace termshade {
+namespace {
+
+// A 400-gon (more triangles than are searched) mapped by a plane projection:
+// its fitted map gives that projection back anywhere on the face.
+TEST(FaceUv, ABigPolygonsCoordinatesComeFromItsFittedPlaneMap) {
+  Mesh mesh;
+  mesh.upAxisFile = UpAxis::kPlusZ;
+  std::vector<uint32_t> corners;
+  for (uint32_t i = 0; i < 400; ++i) {
+    const double angle = 2 * std::numbers::pi * i / 400;
+    mesh.verticesFile.push_back({std::cos(angle), std::sin(angle), 0.0});
+    mesh.cornerUvs.push_back({static_cast<float>(0.25 + 0.5 * std::cos(angle)),
+                              static_cast<float>(0.5 - 0.25 * std::sin(angle))});
+    corners.push_back(i);
+  }
+  mesh.AddFace(corners);
+  mesh.textures = {"halves.png"};
+  mesh.textureImages = {HalvesTexture(4)};
+  mesh.faceTextures = {0};
+  const Scene scene = PrepareScene(std::move(mesh));
+  ASSERT_EQ(scene.textures.bigFaceUvs.size(), 1U);
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, std::pair{0.5, -0.3}, std::pair{-0.7, 0.1}}) {
+    // World space is file space centered on the bounding box (centered here).
+    const auto uv = FaceUvAt(scene, 0, Vec3{x, y, 0.0});
+    EXPECT_NEAR(uv[0], 0.25 + 0.5 * x, 1e-6);
+    EXPECT_NEAR(uv[1], 0.5 - 0.25 * y, 1e-6);
   }
 }
 

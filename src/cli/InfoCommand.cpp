@@ -58,8 +58,7 @@ std::vector<std::string> TextureStates(const Mesh& mesh) {
     if (i >= mesh.textureImages.size()) {
       states.emplace_back("not drawn: no face has coordinates into it");
     } else if (const TextureImage& image = mesh.textureImages[i]; image.Decoded()) {
-      states.push_back((image.readAs.empty() ? "" : "read as " + image.readAs + ", ") + "drawn, " +
-                       std::to_string(image.widthTexels) + " x " +
+      states.push_back("drawn, " + std::to_string(image.widthTexels) + " x " +
                        std::to_string(image.heightTexels) + " texels");
     } else {
       states.push_back("not drawn: " + image.problem);
@@ -169,6 +168,18 @@ int RunInfoCommand(const InfoCommandOptions& options) {
     info.fileUp = UpAxisName(loaded.Value().upAxisFile);
     info.textures = LocateTextures(loaded.Value().textures, path);
     info.textureStates = TextureStates(loaded.Value());
+    // Where the loader found what the name alone does not say: in the file,
+    // or in the folder under another name.
+    for (size_t i = 0; i < info.textures.size() && i < loaded.Value().textureImages.size(); ++i) {
+      const TextureImage& image = loaded.Value().textureImages[i];
+      if (!image.Decoded()) continue;
+      if (!image.readAs.empty()) {
+        info.textures[i].where = TextureWhere::kInFolder;
+        info.textureStates[i] = "read as " + image.readAs + ", " + info.textureStates[i];
+      } else if (info.textures[i].where != TextureWhere::kInFolder) {
+        info.textures[i].where = TextureWhere::kEmbedded;
+      }
+    }
     const Scene scene = PrepareScene(std::move(loaded.Value()), options.upAxis);
     info.loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -254,7 +254,9 @@ int RunRenderCommand(const RenderCommandOptions& options) {
                                           ResolveColourMode(*colourMode) != ColourMode::kNone)
                              : *glyphs;
   renderOptions.cullBackFaces = !options.noCull;
-  renderOptions.textures = options.textures != "off";
+  // (Textures colour cells: not a frame without colours.)
+  renderOptions.textures =
+      options.textures != "off" && ResolveColourMode(*colourMode) != ColourMode::kNone;
   if (options.lightRadians)
     renderOptions.sunEye = SunFromAngles(options.lightRadians->first, options.lightRadians->second);
   renderOptions.threads = options.threads;

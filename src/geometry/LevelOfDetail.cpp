@@ -84,9 +84,9 @@ std::pair<uint32_t, double> SourceFace(const Scene& exact, const Source& source,
   return {best, bestDot};
 }
 
-// A level triangle's colour: its source face's, or on a textured face the
-// texture at the triangle's centroid, on the texture level its size in texels
-// picks, times the face's colour (levels carry no textures: a colour a face).
+// A level triangle's colour when textures are drawn: its source face's, or on
+// a textured face the texture at the triangle's centroid, on the texture level
+// its size in texels picks, times the face's colour (levels carry no images).
 Rgb LevelColour(const Scene& exact, uint32_t sourceFace, Vec3 a, Vec3 b, Vec3 c) {
   const Rgb faceColour = exact.source.faceColors[sourceFace];
   const TextureLevels* texture = exact.textures.FaceTexture(sourceFace);
@@ -100,9 +100,9 @@ Rgb LevelColour(const Scene& exact, uint32_t sourceFace, Vec3 a, Vec3 b, Vec3 c)
     const double dv = (uvs[(k + 1) % 3][1] - uvs[k][1]) * texture->HeightTexels();
     footprint = std::max(footprint, std::sqrt(du * du + dv * dv));
   }
-  const Rgb texel = texture->Sample((uvs[0][0] + uvs[1][0] + uvs[2][0]) / 3.0,
-                                    (uvs[0][1] + uvs[1][1] + uvs[2][1]) / 3.0,
-                                    texture->LevelFor(footprint));
+  const Rgb texel =
+      texture->Sample((uvs[0][0] + uvs[1][0] + uvs[2][0]) / 3.0,
+                      (uvs[0][1] + uvs[1][1] + uvs[2][1]) / 3.0, texture->LevelFor(footprint));
   return Rgb{texel.r * faceColour.r, texel.g * faceColour.g, texel.b * faceColour.b};
 }
 
@@ -143,6 +143,7 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
   faces.corners.reserve(indices.size());
   level.sourceFaces.reserve(triangleCount);
   const bool coloured = !exact.source.faceColors.empty();
+  const bool textured = coloured && exact.textures.Any();
   for (size_t t = 0; t < triangleCount; ++t) {
     const uint32_t* corners = &indices[3 * t];
     std::array<uint32_t, 3> local{newIndex[corners[0]], newIndex[corners[1]], newIndex[corners[2]]};
@@ -170,7 +171,8 @@ DetailLevel MakeLevel(const Scene& exact, const Source& source, std::span<const 
     scene.triangles.push_back({local});
     faces.corners.insert(faces.corners.end(), local.begin(), local.end());
     level.sourceFaces.push_back(sourceFace);
-    if (coloured) scene.source.faceColors.push_back(LevelColour(exact, sourceFace, a, b, c));
+    if (coloured) scene.source.faceColors.push_back(exact.source.faceColors[sourceFace]);
+    if (textured) scene.textures.flatColours.push_back(LevelColour(exact, sourceFace, a, b, c));
   }
   faces.faceCount = scene.triangles.size();
   scene.source.KeepVerticesFile(scene.upAxis, scene.verticesWorld, verticesFile);

@@ -1,5 +1,7 @@
 #include "geometry/Scene.h"
 
+#include "geometry/FaceUv.h"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -452,6 +454,7 @@ std::optional<Scene> PrepareSceneSteps(Mesh mesh, std::optional<UpAxis> upOverri
         }
       });
   if (cancelled()) return std::nullopt;
+  BuildFaceUvs(scene);
   scene.clusters = BuildClusters(scene);
   if (cancelled()) return std::nullopt;
   scene.convexClosedSolid = convex && !scene.triangles.empty();

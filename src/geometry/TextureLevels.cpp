@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "geometry/SrgbCoding.h"
 
@@ -43,12 +44,12 @@ double Wrap(double t) {
 
 }  // namespace
 
-TextureLevels::TextureLevels(const TextureImage& image) {
+TextureLevels::TextureLevels(TextureImage image) {
   if (!image.Decoded() ||
       image.srgbTexels.size() != size_t{image.widthTexels} * image.heightTexels * 3) {
     return;
   }
-  levels_.push_back(image);
+  levels_.push_back(std::move(image));
   levels_.back().problem.clear();
   while (levels_.back().widthTexels > 1 || levels_.back().heightTexels > 1) {
     levels_.push_back(Halve(levels_.back()));

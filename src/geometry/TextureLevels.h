@@ -14,12 +14,16 @@ namespace termshade {
 class TextureLevels {
  public:
   TextureLevels() = default;
-  explicit TextureLevels(const TextureImage& image);
+  explicit TextureLevels(TextureImage image);
 
   bool Empty() const { return levels_.empty(); }
   int LevelCount() const { return static_cast<int>(levels_.size()); }
   uint32_t WidthTexels() const { return Empty() ? 0 : levels_[0].widthTexels; }
   uint32_t HeightTexels() const { return Empty() ? 0 : levels_[0].heightTexels; }
+  /// Bytes of a level's texels.
+  size_t LevelBytes(int level) const {
+    return levels_[static_cast<size_t>(level)].srgbTexels.size();
+  }
   /// The full-size image, as loaded.
   const TextureImage& Image() const { return levels_[0]; }
 

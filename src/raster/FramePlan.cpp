@@ -165,7 +165,7 @@ FramePlan PlanFrame(const Scene& scene, const Camera& camera, const RenderOption
                   .ambient = options.ambient,
                   .lines = plan.method == Method::kWire};
   if (sampled) plan.glyphs = PlanGlyphs(options);
-  plan.textures = options.textures && options.twoColour && scene.textures.Any() &&
+  plan.textures = options.textures && options.twoColour && scene.textures.Colour() &&
                   plan.method != Method::kWire;
   return plan;
 }

@@ -88,8 +88,28 @@ Rgb TextureStage::SampleAlbedo(const Scene& scene, const FrameView& view, uint32
   return texel;
 }
 
+namespace {
+
+// A simplified level: each cell's sides in their faces' flat texture colours.
+void ApplyFlatColours(const Scene& scene, CellBuffer& cells) {
+  const auto& flat = scene.textures.flatColours;
+  const auto colourOf = [&flat](uint32_t face) {
+    return face == 0 || face > flat.size() ? 0U : PackLinear(flat[face - 1]);
+  };
+  for (int row = 0; row < cells.HeightCells(); ++row) {
+    for (int col = 0; col < cells.WidthCells(); ++col) {
+      const size_t cell = cells.Index(col, row);
+      cells.ForeAlbedos()[cell] = colourOf(cells.FaceNumber(col, row));
+      cells.BackAlbedos()[cell] = colourOf(cells.BackFaceNumber(col, row));
+    }
+  }
+}
+
+}  // namespace
+
 void TextureStage::Apply(const Scene& scene, const FrameView& view, CellBuffer& cells) const {
   cells.UseAlbedos();
+  if (!scene.textures.Any()) return ApplyFlatColours(scene, cells);
   for (int row = 0; row < cells.HeightCells(); ++row) {
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const uint32_t face = cells.FaceNumber(col, row);
@@ -104,6 +124,7 @@ void TextureStage::Apply(const Scene& scene, const FrameView& view, CellBuffer& 
 void TextureStage::Apply(const Scene& scene, const FrameView& view, const Samples& samples,
                          CellBuffer& cells) {
   cells.UseAlbedos();
+  if (!scene.textures.Any()) return ApplyFlatColours(scene, cells);
   const auto textured = [&scene](uint32_t faceNumber) {
     return faceNumber != 0 && faceNumber <= scene.FaceCount() &&
            scene.textures.FaceTexture(faceNumber - 1) != nullptr;

@@ -764,7 +764,9 @@ class EventLoop {
     fields.method = std::string(MethodName(render.method)) + " " +
                     std::string(ShadeModeName(render.shade)) +
                     (render.cullBackFaces ? "" : " 2-sided") +
-                    (scene.textures.Any() ? (render.textures ? " textured" : " untextured") : "");
+                    (scene.textures.Any() && state_.Colour() != ColourMode::kNone
+                         ? (render.textures ? " textured" : " untextured")
+                         : "");
     fields.upAxis = std::string(UpAxisName(scene.upAxis));
     fields.vertices = scene.verticesWorld.size();
     fields.faces = scene.FaceCount();

@@ -65,6 +65,29 @@ expect outside_not_read grep -q 'not drawn: a path that leaves the model.s folde
 check outside_render 0 "" -- "$bin" render "$work/sub/outside.obj" "${view[@]}"
 expect outside_never_green bash -c "! grep -q '38;2;0;[0-9]*;0m' '$work/out'"
 
+# No colours, no textures: an ansi dump without colour is the same either way.
+mono=(--theta 0 --phi 1.5708 --size 40x12 --format ansi --no-cull --glyphs sextants --color none)
+check mono_on 0 "" -- "$bin" render "$work/sub/halves.obj" "${mono[@]}"
+mv "$work/out" "$work/none-on.txt"
+check mono_off 0 "" -- "$bin" render "$work/sub/halves.obj" "${mono[@]}" --textures off
+expect mono_drawn grep -q '[^ ]' "$work/none-on.txt"
+expect mono_untouched cmp -s "$work/none-on.txt" "$work/out"
+
+# A name that matches a file but for case is read, not when that file is a
+# link out of the folder (it is resolved and checked again).
+mkdir -p "$work/case"
+cp "$work/sub/halves.png" "$work/case/Halves.PNG"
+cp "$work/outside.png" "$work/secret.png"
+ln -s ../secret.png "$work/case/Secret.png"
+for name in halves secret; do
+  printf 'newmtl m\nKd 1 1 1\nmap_Kd %s.png\n' "$name" >"$work/case/$name.mtl"
+  sed "s/halves.mtl/$name.mtl/" "$work/sub/halves.obj" >"$work/case/$name.obj"
+done
+check case_info 0 "" -- "$bin" info "$work/case/halves.obj"
+expect case_read_as grep -q 'halves.png (found; read as Halves.PNG, drawn, 8 x 8 texels)' "$work/out"
+check case_link_info 0 "" -- "$bin" info "$work/case/secret.obj"
+expect case_link_refused grep -q 'secret.png (missing; not drawn: a path that leaves the model.s folder)' "$work/out"
+
 # Snapshots compare the texture's colours too: the same texture matches, a
 # changed one (its halves swapped) or a missing one fails with the count.
 golden="$work/halves.snapshot"

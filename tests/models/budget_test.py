@@ -14,6 +14,7 @@ import base64
 import math
 import os
 import struct
+import zlib
 import subprocess
 import sys
 import tempfile
@@ -107,6 +108,32 @@ def sphere_2m_ply(path):
     subprocess.run([BINARY, "generate", "sphere", "--triangles", "2000000", "-o", path], check=True)
 
 
+def textured_ngon_obj(path):
+    """One 20,000-gon, textured by a plane projection through its MTL (a 64x64
+    PNG beside it): each sample's texture lookup searched every triangle of
+    the face (more than 300 s a frame before)."""
+    folder = os.path.dirname(path)
+    raw = b"".join(b"\0" + b"".join(bytes((4 * x, 4 * y, 128)) for x in range(64)) for y in range(64))
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data +
+                struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+    with open(os.path.join(folder, "ngon.png"), "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 64, 64, 8, 2, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+    with open(os.path.join(folder, "ngon.mtl"), "w") as f:
+        f.write("newmtl m\nKd 1 1 1\nmap_Kd ngon.png\n")
+    count = 20000
+    with open(path, "w") as f:
+        f.write("mtllib ngon.mtl\n")
+        for i in range(count):
+            angle = 2 * math.pi * i / count
+            f.write("v %.7f %.7f 0\nvt %.7f %.7f\n" % (math.cos(angle), math.sin(angle),
+                                                     0.5 + 0.5 * math.cos(angle),
+                                                     0.5 + 0.5 * math.sin(angle)))
+        f.write("usemtl m\nf " + " ".join("%d/%d" % (i + 1, i + 1) for i in range(count)) + "\n")
+
+
 BINARY = None  # termshade, for the generators that use it
 
 # name, generator, render arguments after the model, budget, standard input (bytes) or None
@@ -124,6 +151,9 @@ CASES = [
     ("coincident_own_vertices.dat", coincident_own_vertices_dat,
      ["--size", "1000x500", "--lod", "auto"], "300M"),
     ("sphere_2m_lod.ply", sphere_2m_ply, ["--size", "160x48", "--lod", "auto"], "250M"),
+    ("textured_20000gon.obj", textured_ngon_obj,
+     ["--size", "160x48", "--glyphs", "sextants", "--color", "truecolor", "--format", "ansi",
+      "--up", "z", "--phi", "0.01"], "200M"),
 ]
 STDIN_BYTES = 200 << 20  # `yes 'v 1 2 3'`, cut at 200 MB: more than the budget lets load
 

@@ -10,7 +10,8 @@ namespace termshade {
 size_t EstimateSceneBytes(const Scene& scene) {
   const size_t faces = scene.facePlanesWorld.size();
   const size_t corners = std::max(scene.source.faces.corners.size(), 3 * scene.triangles.size());
-  return EstimatePreparedBytes(0, scene.verticesWorld.size(), corners, faces);
+  return EstimatePreparedBytes(0, scene.verticesWorld.size(), corners, faces) +
+         scene.textures.HeldBytes();
 }
 
 std::optional<std::string> ExtraOverBudget(std::string_view what, size_t extraBytes,

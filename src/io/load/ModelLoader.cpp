@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "geometry/FaceNormal.h"
+#include "geometry/SceneTextures.h"
 #include "io/import/AssimpModule.h"
 #include "io/import/IsolatedImport.h"
 #include "io/import/OpenGexGuard.h"
@@ -251,7 +252,8 @@ Loaded<Mesh> WithinPreparedBudget(Loaded<Mesh> mesh, const LoadOptions& options)
   if (!mesh.Ok()) return mesh;
   const Mesh& m = mesh.Value();
   const size_t needed = EstimatePreparedBytes(0, m.verticesFile.size(), m.faceCorners.size(),
-                                              m.FaceCount(), LargestFaceCorners(m));
+                                              m.FaceCount(), LargestFaceCorners(m)) +
+                        SceneTextureBytes(m);
   if (needed <= options.memoryBudgetBytes) return mesh;
   return LoadError{m.name, 0, 0,
                    OverBudgetMessage(static_cast<double>(needed), options.memoryBudgetBytes)};

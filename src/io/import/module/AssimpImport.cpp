@@ -201,9 +201,14 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
         std::optional<Rgb> color = vertexColors ? MeanVertexColor(mesh, face) : materialColor;
         anyColor = anyColor || color.has_value();
         colors.push_back(color);
-        faceTextures.push_back(textured ? texture : kNoTexture);
-        for (unsigned i = 0; i < face.mNumIndices; ++i) {
-          cornerUvs.push_back(CornerUv(mesh, face.mIndices[i]));
+        // Coordinates only from the first textured mesh on (the faces before it: none).
+        if (anyTexture) {
+          faceTextures.resize(colors.size() - 1, kNoTexture);
+          cornerUvs.resize(out.faceCorners.size() - face.mNumIndices, std::array<float, 2>{});
+          faceTextures.push_back(textured ? texture : kNoTexture);
+          for (unsigned i = 0; i < face.mNumIndices; ++i) {
+            cornerUvs.push_back(CornerUv(mesh, face.mIndices[i]));
+          }
         }
       } else if (corners.size() == 2) {
         out.segments.push_back({corners[0], corners[1]});
@@ -229,10 +234,18 @@ Mesh BuildMesh(const aiScene& scene, const std::vector<PlacedMesh>& placed) {
 void DecodeTextures(const aiScene& scene, ConfinedIOSystem& files, size_t memoryBudgetBytes,
                     Mesh& mesh) {
   size_t bytesLeft = memoryBudgetBytes / 4;
+  std::vector<uint8_t> used(mesh.textures.size(), 0);
+  for (const uint32_t texture : mesh.faceTextures) {
+    if (texture != kNoTexture) used[texture] = 1;
+  }
   mesh.textureImages.clear();
-  for (const std::string& name : mesh.textures) {
+  for (size_t index = 0; index < mesh.textures.size(); ++index) {
+    const std::string& name = mesh.textures[index];
     TextureImage image;
-    if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.c_str()); embedded != nullptr) {
+    if (used[index] == 0) {
+      image.problem = "no face has coordinates into it";
+    } else if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.c_str());
+               embedded != nullptr) {
       if (embedded->pcData == nullptr) {
         image.problem = "an embedded image without data";
       } else if (embedded->mHeight == 0) {
@@ -357,19 +370,25 @@ Loaded<Mesh> RunAssimpImport(const ImportSource& source, std::string bytes,
   }
   // Step 2: the size of the mesh against the budget, before building it.
   const std::vector<PlacedMesh> placed = PlacedMeshes(*scene);
-  double vertices = 0, corners = 0, faces = 0;
+  double vertices = 0, corners = 0, faces = 0, texturedCorners = 0;
   for (const PlacedMesh& item : placed) {
     vertices += item.mesh->mNumVertices;
     faces += item.mesh->mNumFaces;
+    double meshCorners = 0;
     for (unsigned f = 0; f < item.mesh->mNumFaces && item.mesh->mFaces != nullptr; ++f) {
-      corners += item.mesh->mFaces[f].mNumIndices;
+      meshCorners += item.mesh->mFaces[f].mNumIndices;
     }
+    corners += meshCorners;
+    if (item.mesh->HasTextureCoords(0)) texturedCorners += meshCorners;
   }
   if (vertices >= 4e9 || corners >= 4e9) {
     return fail("the model has more than 4 billion vertices or corners");
   }
-  const auto needed = static_cast<double>(EstimateMeshBytes(
-      static_cast<size_t>(vertices), static_cast<size_t>(corners), static_cast<size_t>(faces)));
+  // (Texture coordinates: 8 bytes a corner, and a face's texture, when any has them.)
+  const auto needed = static_cast<double>(EstimateMeshBytes(static_cast<size_t>(vertices),
+                                                            static_cast<size_t>(corners),
+                                                            static_cast<size_t>(faces))) +
+                      (texturedCorners > 0 ? 8.0 * corners + 4.0 * faces : 0.0);
   if (needed > static_cast<double>(options.memoryBudgetBytes)) {
     return fail(OverBudgetMessage(needed, options.memoryBudgetBytes));
   }

@@ -3,8 +3,8 @@
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <cctype>
 #include <assimp/IOStream.hpp>
+#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -55,32 +55,6 @@ class BytesStream : public Assimp::IOStream {
   const std::atomic<bool>* cancel_;
   size_t position_ = 0;
 };
-
-// A file written "TEST.PNG" that is "test.png" on disk (names from Windows
-// tools): the one entry of its folder equal to it but for case, if exactly one.
-bool MatchCaseInsensitively(std::string& path) {
-  const std::filesystem::path wanted(path);
-  std::error_code error;
-  std::filesystem::directory_iterator entries(wanted.parent_path(), error);
-  if (error) return false;
-  const auto lower = [](std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-  };
-  const std::string name = lower(wanted.filename().string());
-  std::string found;
-  int matches = 0, seen = 0;
-  for (const auto& entry : entries) {
-    if (++seen > 100000) return false;  // a folder this big is not searched
-    if (lower(entry.path().filename().string()) == name) {
-      found = entry.path().string();
-      ++matches;
-    }
-  }
-  if (matches != 1) return false;
-  path = found;
-  return true;
-}
 
 bool IsInside(const std::string& path, const std::string& folder) {
   if (folder == "/") return true;
@@ -199,24 +173,52 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
 }
 
 Loaded<std::string> ConfinedIOSystem::ReadReference(const std::string& name, std::string* readAs) {
-  const auto refuse = [&name](const std::string& reason) {
-    return LoadError{name, 0, 0, reason};
-  };
+  const auto refuse = [&name](const std::string& reason) { return LoadError{name, 0, 0, reason}; };
   std::string resolved, reason;
   if (!Resolve(name, resolved, reason)) return refuse(reason);
   struct stat info {};
   if (stat(resolved.c_str(), &info) != 0) {
-    if (!MatchCaseInsensitively(resolved)) return refuse("no such file in the model's folder");
-    if (readAs != nullptr) *readAs = std::filesystem::path(resolved).filename().string();
+    // A name written "TEST.PNG" for "test.png" (Windows tools): that entry,
+    // resolved and checked again (it may be a link out of the folder).
+    const std::optional<std::string> match = MatchIgnoringCase(resolved);
+    if (!match || !Resolve(*match, resolved, reason)) {
+      return refuse(match ? reason : "no such file in the model's folder");
+    }
+    if (readAs != nullptr) *readAs = std::filesystem::path(*match).filename().string();
   }
   const auto refuseSize = [this](size_t size) -> std::optional<std::string> {
     if (size <= bytesLeft_) return std::nullopt;
     return "it is " + FormatBytes(static_cast<double>(size)) +
            ", more than the memory budget leaves for it";
   };
-  Loaded<std::string> bytes = ReadRegularFile(resolved, refuseSize, cancel_);
-  if (bytes.Ok()) bytesLeft_ -= bytes.Value().size();
-  return bytes;
+  // (The bytes are decoded and freed at once: not kept against the budget.)
+  return ReadRegularFile(resolved, refuseSize, cancel_);
+}
+
+std::optional<std::string> ConfinedIOSystem::MatchIgnoringCase(const std::string& path) {
+  const auto lower = [](std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+  };
+  const std::filesystem::path wanted(path);
+  const std::string folder = wanted.parent_path().string();
+  // Each folder listed once an import, all of them at most kMostListedEntries entries.
+  auto listed = listings_.find(folder);
+  if (listed == listings_.end()) {
+    std::unordered_multimap<std::string, std::string> names;
+    std::error_code error;
+    for (std::filesystem::directory_iterator entry(folder, error), end;
+         !error && entry != end && entriesListed_ < kMostListedEntries; entry.increment(error)) {
+      if (cancel_ != nullptr && cancel_->load(std::memory_order_relaxed)) break;
+      ++entriesListed_;
+      const std::string name = entry->path().filename().string();
+      names.emplace(lower(name), name);
+    }
+    listed = listings_.emplace(folder, std::move(names)).first;
+  }
+  const auto [first, last] = listed->second.equal_range(lower(wanted.filename().string()));
+  if (first == last || std::next(first) != last) return std::nullopt;  // none, or several
+  return (std::filesystem::path(folder) / first->second).string();
 }
 
 void ConfinedIOSystem::Close(Assimp::IOStream* stream) {

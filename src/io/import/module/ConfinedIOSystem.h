@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 
 #include "io/read/LoadError.h"
 
@@ -44,6 +45,10 @@ class ConfinedIOSystem : public Assimp::IOSystem {
   // The canonical path of a reference inside the folder, or a reason for refusing it.
   bool Resolve(const std::string& name, std::string& resolved, std::string& reason) const;
   void Refuse(const std::string& name, const std::string& reason);
+  // The one entry of the path's folder equal to its file name but for case.
+  std::optional<std::string> MatchIgnoringCase(const std::string& path);
+
+  static constexpr size_t kMostListedEntries = 100000;
 
   std::string modelName_;
   std::shared_ptr<const std::string> modelBytes_;
@@ -51,6 +56,9 @@ class ConfinedIOSystem : public Assimp::IOSystem {
   size_t bytesLeft_;
   const std::atomic<bool>* cancel_;
   std::optional<std::string> refusal_;
+  /// Folders listed for MatchIgnoringCase: lower-case name -> name.
+  std::unordered_map<std::string, std::unordered_multimap<std::string, std::string>> listings_;
+  size_t entriesListed_ = 0;
 };
 
 }  // namespace termshade

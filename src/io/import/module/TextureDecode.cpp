@@ -16,8 +16,16 @@
 namespace termshade {
 namespace {
 
-// Decoding keeps the file's texels (up to 4 bytes each) and our 3-byte copy.
-constexpr double kDecodeBytesPerTexel = 8.0;
+// Decoding keeps the file's texels (up to 8 bytes each for 16-bit images),
+// stb's own buffers and our 3-byte copy. (In the import helper the data limit
+// also stops stb, which then fails cleanly: "outofmem".)
+constexpr double kDecodeBytesPerTexel = 16.0;
+
+// stb's reason for the last failure (it may have none).
+std::string StbReason() {
+  const char* reason = stbi_failure_reason();
+  return reason != nullptr ? reason : "no reason given";
+}
 
 TextureImage Refused(std::string reason) {
   TextureImage image;
@@ -80,7 +88,7 @@ TextureImage DecodeTexture(std::string_view fileBytes, size_t maxBytes) {
   // Step 1: the dimensions, from the header alone.
   int width = 0, height = 0, channels = 0;
   if (stbi_info_from_memory(bytes, length, &width, &height, &channels) == 0) {
-    return Refused(std::string("not an image stb_image decodes (") + stbi_failure_reason() + ")");
+    return Refused("not an image stb_image decodes (" + StbReason() + ")");
   }
   if (std::string problem = SizeProblem(static_cast<uint64_t>(std::max(width, 0)),
                                         static_cast<uint64_t>(std::max(height, 0)), maxBytes);
@@ -91,7 +99,7 @@ TextureImage DecodeTexture(std::string_view fileBytes, size_t maxBytes) {
   const std::unique_ptr<stbi_uc, void (*)(void*)> texels(
       stbi_load_from_memory(bytes, length, &width, &height, &channels, 3), stbi_image_free);
   if (!texels || width <= 0 || height <= 0) {
-    return Refused(std::string("cannot decode (") + stbi_failure_reason() + ")");
+    return Refused("cannot decode (" + StbReason() + ")");
   }
   return ReduceTexture(texels.get(), static_cast<uint32_t>(width), static_cast<uint32_t>(height),
                        kMaxTextureSideTexels);
