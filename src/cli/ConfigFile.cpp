@@ -20,9 +20,8 @@ constexpr std::streamsize kMostConfigBytes = 64 * 1024;
 
 // Options the viewer and render both take: a key outside any section sets both.
 constexpr std::array<std::string_view, 13> kSharedKeys{
-    "method",        "shade",          "ramp", "glyphs",  "no-cull",
-    "threads",       "color",          "background",      "mono",
-    "memory-budget", "import-seconds", "lod",  "textures"};
+    "method",     "shade", "ramp",          "glyphs",         "no-cull", "threads", "color",
+    "background", "mono",  "memory-budget", "import-seconds", "lod",     "textures"};
 
 // TOML as CLI11 reads it, at most kMostConfigBytes, with the shared keys
 // outside a section copied into [render].

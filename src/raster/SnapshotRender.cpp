@@ -21,7 +21,8 @@ std::vector<uint32_t> TextureColours(const Scene& scene, const Camera& camera, i
   Renderer().Render(scene, camera, options, depth, cells);
   std::vector<uint32_t> colours(static_cast<size_t>(width) * height, 0U);
   for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) colours[cells.Index(col, row)] = cells.ForeAlbedo(col, row);
+    for (int col = 0; col < width; ++col)
+      colours[cells.Index(col, row)] = cells.ForeAlbedo(col, row);
   }
   return colours;
 }
@@ -62,8 +63,9 @@ std::vector<SnapshotFrame> RenderSnapshot(const Scene& scene, const SnapshotSett
       frame.textRows.push_back(cells.RowText(row));
     frame.samples = ProbeSnapshotSamples(renderer, scene, camera, settings.widthCells,
                                          settings.heightCells, settings.samples, options);
-    if (scene.textures.Any()) frame.textureColours = TextureColours(scene, camera, settings.widthCells,
-                                                                settings.heightCells, options);
+    if (scene.textures.Any())
+      frame.textureColours =
+          TextureColours(scene, camera, settings.widthCells, settings.heightCells, options);
     frames.push_back(std::move(frame));
   }
   return frames;

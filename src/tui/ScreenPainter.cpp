@@ -23,12 +23,13 @@ void ScreenPainter::PaintFrame(const CellBuffer& cells, CellColourMap& colours, 
       cell = {cells.Glyph(col, row), CellStyle::kPlain, TermColour{}, TermColour{}};
       if (level >= 0) {
         cell.style = CellStyle::kFace;
-        cell.colour = colours.ForFace(cells.FaceNumber(col, row), shade(level), cells.ForeAlbedo(col, row));
+        cell.colour =
+            colours.ForFace(cells.FaceNumber(col, row), shade(level), cells.ForeAlbedo(col, row));
         // Two-colour glyph modes (SPEC 11): the samples on the glyph's other side.
         const int backLevel = cells.BackLevel(col, row);
         if (backLevel >= 0)
           cell.background = colours.ForFace(cells.BackFaceNumber(col, row), shade(backLevel),
-                                          cells.BackAlbedo(col, row));
+                                            cells.BackAlbedo(col, row));
         // Both sides in one coarse colour look like a full block of it: sent
         // as one (the writer keeps whatever background it has), and unchanged
         // from the last frame more often.

@@ -224,7 +224,8 @@ std::string MeshWireProblem(const Mesh& mesh) {
     return "face textures not one a face";
   }
   for (const uint32_t texture : mesh.faceTextures) {
-    if (texture != kNoTexture && texture >= mesh.textures.size()) return "a face texture past the names";
+    if (texture != kNoTexture && texture >= mesh.textures.size())
+      return "a face texture past the names";
   }
   if (mesh.cornerUvs.size() != (mesh.faceTextures.empty() ? 0 : mesh.faceCorners.size())) {
     return "texture coordinates not one a corner of a textured mesh";

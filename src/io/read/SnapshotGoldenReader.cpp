@@ -244,15 +244,16 @@ class GoldenParser {
         const auto run = star == std::string_view::npos ? std::optional<int>(1)
                                                         : Number<int>(token.substr(star + 1));
         uint32_t rgb = 0;
-        const bool hex = value.size() == 6 &&
-                         std::from_chars(value.data(), value.data() + 6, rgb, 16).ptr ==
-                             value.data() + 6;
+        const bool hex =
+            value.size() == 6 &&
+            std::from_chars(value.data(), value.data() + 6, rgb, 16).ptr == value.data() + 6;
         if ((value != "-" && !hex) || !run || *run < 1) {
           Fail("a texture colour run must be RRGGBB or -, then *COUNT or nothing");
         }
         count += *run;
         if (count > width) Fail("a texture row must hold " + std::to_string(width) + " cells");
-        colours.insert(colours.end(), static_cast<size_t>(*run), value == "-" ? 0U : rgb | 0x01000000U);
+        colours.insert(colours.end(), static_cast<size_t>(*run),
+                       value == "-" ? 0U : rgb | 0x01000000U);
       }
       if (count != width) Fail("a texture row must hold " + std::to_string(width) + " cells");
     }

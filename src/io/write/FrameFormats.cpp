@@ -168,7 +168,8 @@ void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, 
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const int level = cells.Level(col, row);
       if (level >= 0 && mode != ColourMode::kNone) {  // a blank cell keeps the colour it has
-        const TermColour wanted = colours.ForFace(cells.FaceNumber(col, row), level, cells.ForeAlbedo(col, row));
+        const TermColour wanted =
+            colours.ForFace(cells.FaceNumber(col, row), level, cells.ForeAlbedo(col, row));
         if (!(wanted == current)) AppendForegroundSgr(wanted, out);
         current = wanted;
       }

@@ -112,7 +112,8 @@ std::string FormatSnapshotGolden(const SnapshotGolden& golden) {
            std::to_string(frame.samples.heightSamples) + "\n";
     AppendSampleRows(frame.samples, out);
     AppendShades(frame.samples, out);
-    if (!frame.textureColours.empty()) AppendTextureColours(frame.textureColours, s.widthCells, out);
+    if (!frame.textureColours.empty())
+      AppendTextureColours(frame.textureColours, s.widthCells, out);
   }
   return out;
 }

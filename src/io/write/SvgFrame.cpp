@@ -163,15 +163,15 @@ void AppendSvgFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, i
       // Step 2: the cell's background, where a two-colour mode gives one.
       const int backLevel = cells.BackLevel(col, row);
       if (coloured && backLevel >= 0) {
-        const TermColour back = colours.ForFace(cells.BackFaceNumber(col, row), backLevel,
-                                                  cells.BackAlbedo(col, row));
+        const TermColour back =
+            colours.ForFace(cells.BackFaceNumber(col, row), backLevel, cells.BackAlbedo(col, row));
         if (back.kind != TermColour::Kind::kDefault)
           backgrounds.Add({x, y, widthPx, heightPx, ShownColour(back, style.theme, true)});
       }
       // Step 3: the glyph, as rectangles, dots or text.
       const int level = cells.Level(col, row);
-      if (coloured && level >= 0) current = colours.ForFace(cells.FaceNumber(col, row), level,
-                                                           cells.ForeAlbedo(col, row));
+      if (coloured && level >= 0)
+        current = colours.ForFace(cells.FaceNumber(col, row), level, cells.ForeAlbedo(col, row));
       const Srgb8 ink = ShownColour(current, style.theme, false);
       const char32_t glyph = cells.Glyph(col, row);
       const GlyphShape* shape = glyph == U' ' ? nullptr : ShapeOfGlyph(glyph);
