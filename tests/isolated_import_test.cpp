@@ -311,3 +311,64 @@ TEST(ImportWire, MeshesThatNoLoaderMakesAreNamed) {
 
 }  // namespace
 }  // namespace termshade
+
+namespace termshade {
+namespace {
+
+// What the reader says of a textured mesh's answer (empty: accepted).
+std::string TexturedWireRefusal(const Mesh& mesh) {
+  std::string wire;
+  const WireSink sink = [&](const void* from, size_t size) {
+    wire.append(static_cast<const char*>(from), size);
+    return true;
+  };
+  EXPECT_TRUE(WriteResultFrame(ModuleStatus::kDone, "", mesh, sink));
+  size_t at = 1;
+  WireReader reader(
+      [&](void* to, size_t size) {
+        if (at + size > wire.size()) return false;
+        std::memcpy(to, wire.data() + at, size);
+        at += size;
+        return true;
+      },
+      wire.size());
+  ModuleStatus status{};
+  std::string text;
+  Loaded<Mesh> read = LoadError{};
+  return ReadResultFrame(reader, status, text, read) ? std::string() : reader.Problem();
+}
+
+TEST(ImportWire, TexturedMeshesOutOfShapeAreRefused) {
+  Mesh mesh;
+  mesh.verticesFile = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const uint32_t face[] = {0, 1, 2};
+  mesh.AddFace(face);
+  mesh.textures = {"wood.png"};
+  mesh.textureImages = {TextureImage{2, 1, {1, 2, 3, 4, 5, 6}, "", ""}};
+  mesh.faceTextures = {0};
+  mesh.cornerUvs = {{0, 0}, {1, 0}, {0, 1}};
+  EXPECT_EQ(TexturedWireRefusal(mesh), "");
+  Mesh unfilled = mesh;
+  unfilled.textureImages[0].srgbTexels.pop_back();
+  EXPECT_EQ(TexturedWireRefusal(unfilled), "a texture image whose texels do not fill it");
+  Mesh large = mesh;
+  large.textureImages[0] = TextureImage{kMaxTextureSideTexels + 1, 1, {}, "", ""};
+  large.textureImages[0].srgbTexels.resize(size_t{kMaxTextureSideTexels + 1} * 3);
+  EXPECT_EQ(TexturedWireRefusal(large), "a texture image larger than allowed");
+  Mesh extraImage = mesh;
+  extraImage.textureImages.push_back(mesh.textureImages[0]);
+  EXPECT_EQ(TexturedWireRefusal(extraImage), "texture images not one a name");
+  Mesh pastNames = mesh;
+  pastNames.faceTextures = {1};
+  EXPECT_EQ(TexturedWireRefusal(pastNames), "a face texture past the names");
+  Mesh shortUvs = mesh;
+  shortUvs.cornerUvs.pop_back();
+  EXPECT_EQ(TexturedWireRefusal(shortUvs),
+            "texture coordinates not one a corner of a textured mesh");
+  Mesh faces = mesh;
+  faces.faceTextures = {0, 0};
+  EXPECT_EQ(TexturedWireRefusal(faces), "face textures not one a face");
+}
+
+}  // namespace
+}  // namespace termshade
