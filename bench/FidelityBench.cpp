@@ -10,13 +10,12 @@
 #include <random>
 #include <vector>
 
+#include "FidelityScenes.h"
 #include "MethodsBench.h"
 #include "SpeedErrorPlot.h"
 #include "Statistics.h"
 #include "geometry/FitCamera.h"
-#include "io/load/ModelLoader.h"
 #include "io/read/LoadError.h"
-#include "io/scenes/SceneGenerators.h"
 #include "raster/FrameFidelity.h"
 #include "raster/Renderer.h"
 
@@ -25,67 +24,23 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct NamedScene {
-  std::string name;
-  Scene scene;
-};
-
-// A (2, 3) torus knot tube: curved, self-occluding, thin in places, 19,200 triangles.
-Mesh TorusKnot() {
-  constexpr int kAlong = 320, kAround = 30;
-  constexpr double kTube = 0.28;
-  Mesh mesh;
-  auto curve = [](double t) {
-    const double r = 2.0 + std::cos(3 * t);
-    return Vec3{r * std::cos(2 * t), r * std::sin(2 * t), std::sin(3 * t)};
-  };
-  for (int i = 0; i < kAlong; ++i) {
-    const double t = 2 * std::numbers::pi * i / kAlong, dt = 1e-4;
-    const Vec3 p = curve(t), tangent = Normalized(curve(t + dt) - curve(t - dt));
-    const Vec3 side = Normalized(Cross(tangent, Vec3{0, 0, 1}));
-    const Vec3 up = Cross(side, tangent);
-    for (int j = 0; j < kAround; ++j) {
-      const double a = 2 * std::numbers::pi * j / kAround;
-      mesh.verticesFile.push_back(p + (side * std::cos(a) + up * std::sin(a)) * kTube);
-    }
-  }
-  for (int i = 0; i < kAlong; ++i) {
-    for (int j = 0; j < kAround; ++j) {
-      const auto at = [&](int ii, int jj) {
-        return static_cast<uint32_t>((ii % kAlong) * kAround + jj % kAround);
-      };
-      mesh.AddFace(std::array<uint32_t, 4>{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  }
-  return mesh;
-}
-
-std::vector<NamedScene> Scenes(const std::string& dataDirectory) {
-  std::vector<NamedScene> scenes;
-  for (const std::string& name : GeneratedSceneNames()) {
-    Loaded<Mesh> mesh = LoadModelFile(dataDirectory + "/" + name + ".dat");
-    if (!mesh.Ok()) {
-      std::cerr << mesh.Error().ToString() << "\n";
-      continue;
-    }
-    scenes.push_back({name, PrepareScene(std::move(mesh.Value()))});
-  }
-  scenes.push_back({"torus knot 19k", PrepareScene(TorusKnot())});
-  return scenes;
-}
-
 struct ModeCase {
   GlyphMode mode;
   bool colour;
+  bool textures = true;  ///< false: a textured scene drawn without (what textures bring)
   std::string Name() const {
-    return std::string(GlyphModeName(mode)) + (colour ? " colour" : " mono");
+    return std::string(GlyphModeName(mode)) + (colour ? " colour" : " mono") +
+           (textures ? "" : " untextured");
   }
 };
 
-std::vector<ModeCase> Cases() {
+// Every mode, mono and colour; on a textured scene also each colour mode
+// without its textures, against the same textured exact image.
+std::vector<ModeCase> Cases(const Scene& scene) {
   std::vector<ModeCase> cases;
   for (int m = 0; m < kGlyphModeCount; ++m) {
     for (bool colour : {false, true}) cases.push_back({static_cast<GlyphMode>(m), colour});
+    if (scene.textures.Colour()) cases.push_back({static_cast<GlyphMode>(m), true, false});
   }
   return cases;
 }
@@ -96,6 +51,7 @@ RenderOptions OptionsFor(const ModeCase& c) {
   options.keepDepth = false;            // as the viewer draws
   options.glyphs = c.mode;
   options.twoColour = c.colour;
+  options.textures = c.textures;
   return options;
 }
 
@@ -157,7 +113,7 @@ struct CaseResult {
 }  // namespace
 
 int RunFidelityBench(const FidelityBenchOptions& options) {
-  std::vector<NamedScene> scenes = Scenes(options.dataDirectory);
+  std::vector<NamedScene> scenes = FidelityScenes(options.dataDirectory);
   if (scenes.size() < 3) {
     std::cerr << "termshade bench: run it from the source tree (or pass --data DIR)\n";
     return 1;
@@ -183,7 +139,7 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
       "termshade bench fidelity: %dx%d cells, %d views per scene, blurred SSIM and MSE "
       "against the exact 8x16-per-cell image, %s\n",
       cols, rows, options.frames, MachineDescription().c_str());
-  std::printf("%-15s %-17s %9s %7s %7s %9s %8s %9s\n", "scene", "mode", "median ms", "x ramp",
+  std::printf("%-15s %-28s %9s %7s %7s %9s %8s %9s\n", "scene", "mode", "median ms", "x ramp",
               "SSIM", "MSE", "SSIM uf", "flicker %");
   std::vector<FidelityPoint> points;
   for (const NamedScene& named : scenes) {
@@ -197,14 +153,17 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
       view.theta += 0.01;
       nudged.push_back(FitCamera(named.scene, view, cols, rows, 2.0));
       if (options.timingOnly) continue;
-      exact.push_back(ExactImage(named.scene, cameras.back(), OptionsFor({}), cols, rows, 1.0));
+      exact.push_back(ExactImage(named.scene, cameras.back(), OptionsFor({GlyphMode::kRamp, true}),
+                                 cols, rows, 1.0));
     }
     // Step 2: every mode's frame time, interleaved, then its fidelity on those views.
-    const std::vector<ModeCase> cases = Cases();
+    const std::vector<ModeCase> cases = Cases(named.scene);
     const std::vector<double> medianMs = MedianFrameMs(named, cases, cameras, options);
     double rampMs[2] = {0.0, 0.0};
     for (size_t i = 0; i < cases.size(); ++i) {
-      if (cases[i].mode == GlyphMode::kRamp) rampMs[cases[i].colour ? 1 : 0] = medianMs[i];
+      if (cases[i].mode == GlyphMode::kRamp && cases[i].textures) {
+        rampMs[cases[i].colour ? 1 : 0] = medianMs[i];
+      }
     }
     for (size_t i = 0; i < cases.size(); ++i) {
       const ModeCase& c = cases[i];
@@ -212,7 +171,7 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
       CaseResult result;
       result.ms = medianMs[i];
       if (options.timingOnly) {
-        std::printf("%-15s %-17s %9.4f %7.2f\n", named.name.c_str(), c.Name().c_str(), result.ms,
+        std::printf("%-15s %-28s %9.4f %7.2f\n", named.name.c_str(), c.Name().c_str(), result.ms,
                     result.ms / rampMs[c.colour ? 1 : 0]);
         continue;
       }
@@ -237,13 +196,13 @@ int RunFidelityBench(const FidelityBenchOptions& options) {
         }
       }
       const double vsRamp = result.ms / rampMs[c.colour ? 1 : 0];
-      std::printf("%-15s %-17s %9.4f %7.2f %7.4f %9.6f %8.4f %9.2f\n", named.name.c_str(),
+      std::printf("%-15s %-28s %9.4f %7.2f %7.4f %9.6f %8.4f %9.2f\n", named.name.c_str(),
                   c.Name().c_str(), result.ms, vsRamp, result.ssim, result.mse, result.ssimUnifont,
                   100 * result.flicker);
       csv << '"' << named.name << "\",\"" << c.Name() << "\"," << result.ms << ',' << vsRamp << ','
           << result.ssim << ',' << result.mse << ',' << result.ssimUnifont << ',' << result.flicker
           << "\n";
-      points.push_back({named.name, c.Name(), result.ms, result.ssim});
+      if (c.textures) points.push_back({named.name, c.Name(), result.ms, result.ssim});
     }
     std::fflush(stdout);
   }

@@ -13,6 +13,7 @@
 #include "geometry/TextureLevels.h"
 #include "geometry/ViewingTransform.h"
 #include "io/scenes/SceneGenerators.h"
+#include "raster/FrameFidelity.h"
 #include "raster/Renderer.h"
 #include "shade/CellColour.h"
 #include "shade/GlyphMode.h"
@@ -185,6 +186,54 @@ TEST(TextureStage, TheSourceMeshGivesTheTexturesBack) {
     EXPECT_EQ(back.cornerUvs[i][0], p.y > 0 ? 1.0F : 0.0F);
     EXPECT_EQ(back.cornerUvs[i][1], p.z > 0 ? 1.0F : 0.0F);
   }
+}
+
+TEST(TextureFidelity, TheExactImageIsShadeTimesTheTexelsLuminance) {
+  const Scene scene = PrepareScene(TexturedSquare(HalvesTexture(16)));
+  const Camera camera{{6.0, 0.0, std::numbers::pi / 2}, FitProjection(1.5, 6.0, 80, 24, 2.0)};
+  RenderOptions options;
+  const InkImage textured = ExactImage(scene, camera, options, 80, 24, 1.0);
+  options.textures = false;
+  const InkImage plain = ExactImage(scene, camera, options, 80, 24, 1.0);
+  // The middle row of pixels, 10 cells either side of the square's middle:
+  // red's luminance (0.2126) on the left, blue's (0.0722) on the right.
+  const int yPx = static_cast<int>(camera.projection.cy * kFidelityPxPerCellDown);
+  for (const auto& [cellsAcross, luminance] : {std::pair{-10, 0.2126}, std::pair{10, 0.0722}}) {
+    const int xPx =
+        static_cast<int>((camera.projection.cx + cellsAcross) * kFidelityPxPerCellAcross);
+    const size_t at = static_cast<size_t>(yPx) * textured.widthPx + xPx;
+    ASSERT_GT(plain.pixels[at], 0.1F) << "the square is lit there";
+    EXPECT_NEAR(textured.pixels[at] / plain.pixels[at], luminance, 1e-4) << cellsAcross;
+  }
+}
+
+TEST(TextureFidelity, TexturedFramesMatchTheTexturedModelBetterThanPlainOnes) {
+  const Scene scene = PrepareScene(TexturedSquare(HalvesTexture(16)));
+  const Camera camera{{6.0, 0.3, std::numbers::pi / 2}, FitProjection(1.5, 6.0, 80, 24, 2.0)};
+  RenderOptions options;
+  options.twoColour = true;
+  const InkImage exact = ExactImage(scene, camera, options, 80, 24, 1.0);
+  const auto ssimOf = [&](bool textures) {
+    const Drawn drawn = Draw(scene, camera, GlyphMode::kSextants, textures);
+    return CompareImages(exact, GlyphImage(drawn.cells, DefaultInkTable(), true), 1.0).ssim;
+  };
+  const double textured = ssimOf(true), plain = ssimOf(false);
+  EXPECT_GT(textured, 0.95);
+  EXPECT_GT(textured, plain + 0.1) << "plain " << plain;
+}
+
+TEST(TextureFidelity, FlickerCountsTextureColoursThatMoveVisibly) {
+  CellBuffer before(4, 1);
+  before.FaceNumbers()[1] = 7;
+  before.Glyphs()[1] = U'#';
+  before.UseAlbedos();
+  before.ForeAlbedos()[1] = PackAlbedo({100, 100, 100});
+  CellBuffer after = before;
+  after.ForeAlbedos()[1] = PackAlbedo({100, 112, 100});  // 12 steps: unseen
+  EXPECT_EQ(ChangedShare(before, after, true), 0.0);
+  after.ForeAlbedos()[1] = PackAlbedo({100, 113, 100});
+  EXPECT_EQ(ChangedShare(before, after, true), 1.0);
+  EXPECT_EQ(ChangedShare(before, after, false), 0.0) << "mono frames show no texture";
 }
 
 TEST(TextureLevels, EachLevelHalvesAndKeepsTheMeanInLinearLight) {

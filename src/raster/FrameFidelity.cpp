@@ -5,7 +5,9 @@
 
 #include "geometry/RayCast.h"
 #include "geometry/ViewingTransform.h"
+#include "raster/TextureSample.h"
 #include "shade/BlockGlyphs.h"
+#include "shade/CellColour.h"
 
 namespace termshade {
 namespace {
@@ -52,6 +54,23 @@ std::vector<float> Blur(const std::vector<float>& image, int width, int height, 
   return out;
 }
 
+// The luminance of the texel a pixel's ray sees on a textured face (1 on
+// other faces): at the pixel's exact coordinates, on the level its footprint
+// (one pixel right and down) asks for.
+float TextureLuminance(const Scene& scene, const FrameView& view, uint32_t face, int xPx, int yPx) {
+  if (scene.textures.FaceTexture(face) == nullptr) return 1.0F;
+  int level = -1;
+  const FrameStep pixel{1.0 / kAcross, 1.0 / kDown};
+  const Rgb albedo =
+      TexturedAlbedoAt(scene, view, face, (xPx + 0.5) / kAcross, (yPx + 0.5) / kDown, pixel, level);
+  return static_cast<float>(LinearLuminance(albedo));
+}
+
+// A side's albedo luminance: 1 where the face's colour serves (albedo 0).
+float AlbedoLuminance(uint32_t packed) {
+  return packed == 0 ? 1.0F : static_cast<float>(LinearLuminance(UnpackAlbedo(packed)));
+}
+
 std::vector<float> Product(const std::vector<float>& a, const std::vector<float>& b) {
   std::vector<float> out(a.size());
   for (size_t i = 0; i < a.size(); ++i) out[i] = a[i] * b[i];
@@ -75,15 +94,17 @@ InkImage ExactImage(const Scene& scene, const Camera& camera, const RenderOption
     faceIntensity[f] =
         static_cast<float>(inkRange * LambertIntensity(Dot(nEye, options.sunEye), options.ambient));
   }
+  const bool textured = options.textures && scene.textures.Any();
+  const FrameView view{camera, eyeFromWorld, eyeWorld, {}};
   InkImage image{widthCells * kAcross, heightCells * kDown, {}};
   image.pixels.assign(static_cast<size_t>(image.widthPx) * image.heightPx, 0.0F);
   for (int y = 0; y < image.heightPx; ++y) {
     for (int x = 0; x < image.widthPx; ++x) {
       const RaySample hit = exact.Cast((x + 0.5) / kAcross, (y + 0.5) / kDown);
-      if (hit.faceNumber != 0) {
-        image.pixels[static_cast<size_t>(y) * image.widthPx + x] =
-            faceIntensity[hit.faceNumber - 1];
-      }
+      if (hit.faceNumber == 0) continue;
+      const uint32_t face = hit.faceNumber - 1;
+      image.pixels[static_cast<size_t>(y) * image.widthPx + x] =
+          faceIntensity[face] * (textured ? TextureLuminance(scene, view, face, x, y) : 1.0F);
     }
   }
   return image;
@@ -96,8 +117,12 @@ InkImage GlyphImage(const CellBuffer& cells, const GlyphInkTable& table, bool co
     for (int col = 0; col < cells.WidthCells(); ++col) {
       const InkMap* ink = table.Find(cells.Glyph(col, row));
       if (ink == nullptr || cells.FaceNumber(col, row) == 0) continue;
-      const float fore = colour ? cells.Intensity(col, row) / 255.0F : 1.0F;
-      const float back = colour ? cells.BackIntensity(col, row) / 255.0F : 0.0F;
+      const float fore =
+          colour ? cells.Intensity(col, row) / 255.0F * AlbedoLuminance(cells.ForeAlbedo(col, row))
+                 : 1.0F;
+      const float back = colour ? cells.BackIntensity(col, row) / 255.0F *
+                                      AlbedoLuminance(cells.BackAlbedo(col, row))
+                                : 0.0F;
       for (int j = 0; j < kDown; ++j) {
         for (int i = 0; i < kAcross; ++i) {
           const float a = (*ink)[static_cast<size_t>(j * kAcross + i)] / 255.0F;
@@ -167,6 +192,13 @@ Fidelity CompareImages(const InkImage& exact, const InkImage& frame, double rang
 }
 
 double ChangedShare(const CellBuffer& before, const CellBuffer& after, bool colour) {
+  const auto albedosDiffer = [&](size_t i) {
+    const int col = static_cast<int>(i % before.WidthCells());
+    const int row = static_cast<int>(i / before.WidthCells());
+    return !AlbedosAlike(before.ForeAlbedo(col, row), after.ForeAlbedo(col, row),
+                         kAlbedoStepSeen) ||
+           !AlbedosAlike(before.BackAlbedo(col, row), after.BackAlbedo(col, row), kAlbedoStepSeen);
+  };
   long shown = 0, changed = 0;
   for (size_t i = 0; i < before.Glyphs().size(); ++i) {
     if (before.FaceNumbers()[i] == 0 && after.FaceNumbers()[i] == 0) continue;
@@ -174,7 +206,7 @@ double ChangedShare(const CellBuffer& before, const CellBuffer& after, bool colo
     bool differs = before.Glyphs()[i] != after.Glyphs()[i];
     if (colour) {
       differs = differs || before.Levels()[i] != after.Levels()[i] ||
-                before.BackLevels()[i] != after.BackLevels()[i];
+                before.BackLevels()[i] != after.BackLevels()[i] || albedosDiffer(i);
     }
     changed += differs ? 1 : 0;
   }

@@ -22,13 +22,17 @@ constexpr int kFidelityPxPerCellDown = kInkRows;
 
 /// The exact image of SPEC 12: a double-precision ray cast (SPEC 8) at the
 /// center of each of 8 x 16 pixels a cell, Lambert intensity of the face hit
-/// (its normal turned towards the eye; background 0), times inkRange.
+/// (its normal turned towards the eye; background 0), times inkRange. With
+/// options.textures, a textured face's intensity is also times the relative
+/// luminance of its texel at the pixel (exact coordinates, bilinear on the
+/// level of the pixel's footprint, linear light).
 InkImage ExactImage(const Scene& scene, const Camera& camera, const RenderOptions& options,
                     int widthCells, int heightCells, double inkRange);
 
 /// The frame drawn back into pixels: each cell's glyph ink map (from `table`;
-/// a glyph it lacks counts as blank) blends fg and bg intensity. Without
-/// colour the ink is the terminal's full-intensity fg on a black bg.
+/// a glyph it lacks counts as blank) blends fg and bg intensity, each times
+/// the relative luminance of the side's texture albedo where it has one.
+/// Without colour the ink is the terminal's full-intensity fg on a black bg.
 InkImage GlyphImage(const CellBuffer& cells, const GlyphInkTable& table, bool colour);
 
 /// The brightest mean ink a mode's glyphs reach: what the exact image is scaled
@@ -47,7 +51,8 @@ struct Fidelity {
 Fidelity CompareImages(const InkImage& exact, const InkImage& frame, double range);
 
 /// Share of cells, among those showing a face in either frame, whose glyph or
-/// colours differ between two frames of the same size.
+/// colours (shade levels; texture colours by more than kAlbedoStepSeen)
+/// differ between two frames of the same size.
 double ChangedShare(const CellBuffer& before, const CellBuffer& after, bool colour);
 
 }  // namespace termshade

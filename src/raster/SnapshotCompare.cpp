@@ -126,18 +126,11 @@ bool SnapshotOutcome::Passed() const {
 void CompareTextureColours(const std::vector<uint32_t>& golden, const std::vector<uint32_t>& actual,
                            SnapshotDifference& difference) {
   if (golden.empty()) return;
-  const auto channel = [](uint32_t colour, int shift) {
-    return static_cast<int>((colour >> shift) & 0xFFU);
-  };
   for (size_t i = 0; i < golden.size(); ++i) {
     const uint32_t g = golden[i], a = i < actual.size() ? actual[i] : 0U;
     if (g == 0 && a == 0) continue;
     ++difference.texturedCells;
-    const bool alike = g != 0 && a != 0 &&
-                       std::abs(channel(g, 16) - channel(a, 16)) <= kTextureColourStep &&
-                       std::abs(channel(g, 8) - channel(a, 8)) <= kTextureColourStep &&
-                       std::abs(channel(g, 0) - channel(a, 0)) <= kTextureColourStep;
-    if (!alike) ++difference.textureCells;
+    if (!AlbedosAlike(g, a, kTextureColourStep)) ++difference.textureCells;
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "raster/SnapshotRender.h"
 #include "raster/SnapshotSamples.h"
+#include "shade/CellColour.h"
 
 namespace termshade {
 
@@ -58,7 +59,7 @@ struct SnapshotDifference {
 };
 
 /// Two texture colours of a cell look alike within this many sRGB steps a channel.
-constexpr int kTextureColourStep = 12;
+constexpr int kTextureColourStep = kAlbedoStepSeen;
 
 /// Counts the cells whose texture colours differ (SnapshotDifference's texture
 /// fields); nothing when the golden has none (a golden made before textures).

@@ -14,10 +14,6 @@ constexpr size_t kMostSamples = 32;
 // Sides whose mean shaded luminance differs by less than this look alike.
 constexpr double kLeastLuminanceStep = 0.02;
 
-double Luminance(Rgb c) {
-  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
-}
-
 // The samples' mean albedo and their most frequent face, over `members`.
 struct Side {
   Rgb albedo;
@@ -51,7 +47,7 @@ bool ReduceToParts(const TexturedCell& cell, SampleGrid pattern,
       if (face == 0 || face > faceIntensities.size()) return false;
       const Rgb a = cell.albedos[n];
       sum[0] += a.r, sum[1] += a.g, sum[2] += a.b;
-      shaded += Luminance(a) * faceIntensities[face - 1] / 255.0;
+      shaded += LinearLuminance(a) * faceIntensities[face - 1] / 255.0;
       int votes = 0;
       for (int j = 0; j < subAcross * subDown; ++j) {
         votes += cell.faces[static_cast<size_t>(first + (j / subAcross) * cell.grid.across +

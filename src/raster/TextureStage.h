@@ -37,12 +37,6 @@ class TextureStage {
   void Apply(const Scene& scene, const FrameView& view, const Samples& samples, CellBuffer& cells);
 
  private:
-  /// Albedo (linear) at sample (x, y) of the view's frame (cell or sample units)
-  /// on a face, on texture level `level`; a negative one is first found from
-  /// the sample's footprint (and kept there for the cell's other samples).
-  Rgb SampleAlbedo(const Scene& scene, const FrameView& view, uint32_t face, double x, double y,
-                   int& level) const;
-
   std::vector<Rgb> albedos_;  ///< one cell's samples' albedos (kept between cells)
 };
 

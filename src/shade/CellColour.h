@@ -34,6 +34,19 @@ struct TermColour {
 inline uint32_t PackAlbedo(Srgb8 colour) {
   return 0x01000000U | (uint32_t{colour.r} << 16) | (uint32_t{colour.g} << 8) | colour.b;
 }
+/// sRGB steps a channel below which a change of a cell's albedo goes unseen.
+inline constexpr int kAlbedoStepSeen = 12;
+/// Whether two packed albedos (0 included) look alike: both 0, or both set
+/// and no sRGB channel apart by more than `step`.
+inline bool AlbedosAlike(uint32_t a, uint32_t b, int step) {
+  if (a == 0 || b == 0) return a == b;
+  for (const int shift : {16, 8, 0}) {
+    const int apart =
+        static_cast<int>((a >> shift) & 0xFFU) - static_cast<int>((b >> shift) & 0xFFU);
+    if (apart > step || -apart > step) return false;
+  }
+  return true;
+}
 /// Linear light to 8-bit sRGB, each component clamped to [0, 1].
 Srgb8 EncodeSrgb8(Rgb linear);
 /// The linear colour of a packed albedo.
