@@ -6,12 +6,16 @@
 
 namespace termshade {
 
+double LinearOfSrgb8Exact(uint8_t component) {
+  const double c = component / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 float LinearOfSrgb8(uint8_t component) {
   static const std::array<float, 256> kTable = [] {
     std::array<float, 256> table{};
     for (int i = 0; i < 256; ++i) {
-      const double c = i / 255.0;
-      table[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+      table[i] = static_cast<float>(LinearOfSrgb8Exact(static_cast<uint8_t>(i)));
     }
     return table;
   }();

@@ -20,20 +20,6 @@ double LuminanceOf(const Linear& c) {
   return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
 }
 
-// sRGB transfer function (IEC 61966-2-1).
-double EncodeSrgb(double linear) {
-  const double c = std::clamp(linear, 0.0, 1.0);
-  return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
-double DecodeSrgb(uint8_t value) {
-  const double c = value / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
-uint8_t ToByte(double encoded) {
-  return static_cast<uint8_t>(std::lround(std::clamp(encoded, 0.0, 1.0) * 255.0));
-}
-
 // Squared distance of two sRGB colours, weighted by how the eye tells them
 // apart ("redmean", Riemersma's low-cost approximation).
 double Distance(Srgb8 a, Srgb8 b) {
@@ -92,11 +78,11 @@ Srgb8 ShadedFaceColour(Rgb faceLinear, double intensity, Background background) 
     const double lift = kDarkFloorLuminance - luminance;
     c = {c.r + lift, c.g + lift, c.b + lift};
   }
-  return {ToByte(EncodeSrgb(c.r)), ToByte(EncodeSrgb(c.g)), ToByte(EncodeSrgb(c.b))};
+  return {Srgb8OfLinear(c.r), Srgb8OfLinear(c.g), Srgb8OfLinear(c.b)};
 }
 
 Srgb8 EncodeSrgb8(Rgb linear) {
-  return {ToByte(EncodeSrgb(linear.r)), ToByte(EncodeSrgb(linear.g)), ToByte(EncodeSrgb(linear.b))};
+  return {Srgb8OfLinear(linear.r), Srgb8OfLinear(linear.g), Srgb8OfLinear(linear.b)};
 }
 
 Rgb UnpackAlbedo(uint32_t packed) {
@@ -149,7 +135,8 @@ TermColour CellColour(Rgb faceLinear, double intensity, ColourMode mode, Backgro
 }
 
 double RelativeLuminance(Srgb8 colour) {
-  return LuminanceOf({DecodeSrgb(colour.r), DecodeSrgb(colour.g), DecodeSrgb(colour.b)});
+  return LuminanceOf(
+      {LinearOfSrgb8Exact(colour.r), LinearOfSrgb8Exact(colour.g), LinearOfSrgb8Exact(colour.b)});
 }
 
 double ContrastRatio(Srgb8 a, Srgb8 b) {
