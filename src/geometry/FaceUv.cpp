@@ -109,15 +109,17 @@ void BuildFaceUvs(Scene& scene) {
 
 std::array<double, 2> FaceUvAt(const Scene& scene, uint32_t face, Vec3 p) {
   const SceneTextures& t = scene.textures;
-  if (const auto big = t.bigFaceUvs.find(face); big != t.bigFaceUvs.end()) {
-    const SceneTextures::AffineUv& map = big->second;
-    return {Dot(map.uFromPoint, p) + map.uOffset, Dot(map.vFromPoint, p) + map.vOffset};
+  const uint32_t begin = scene.FaceTrianglesBegin(face), end = scene.FaceTrianglesBegin(face + 1);
+  if (end - begin > kMostScannedTriangles) {
+    if (const auto big = t.bigFaceUvs.find(face); big != t.bigFaceUvs.end()) {
+      const SceneTextures::AffineUv& map = big->second;
+      return {Dot(map.uFromPoint, p) + map.uOffset, Dot(map.vFromPoint, p) + map.vOffset};
+    }
   }
   const FacePlane& plane = scene.facePlanesWorld[face];
   double bestLeast = -std::numeric_limits<double>::infinity();
   std::array<double, 2> best{0.0, 0.0};
-  const uint32_t end = scene.FaceTrianglesBegin(face + 1);
-  for (uint32_t tri = scene.FaceTrianglesBegin(face); tri < end; ++tri) {
+  for (uint32_t tri = begin; tri < end; ++tri) {
     const auto& v = scene.triangles[tri].vertices;
     const auto w = Barycentric(p, scene.verticesWorld[v[0]], scene.verticesWorld[v[1]],
                                scene.verticesWorld[v[2]], plane.normal);

@@ -11,7 +11,7 @@ double LinearOfSrgb8Exact(uint8_t component) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-float LinearOfSrgb8(uint8_t component) {
+const std::array<float, 256>& LinearOfSrgb8Table() {
   static const std::array<float, 256> kTable = [] {
     std::array<float, 256> table{};
     for (int i = 0; i < 256; ++i) {
@@ -19,7 +19,7 @@ float LinearOfSrgb8(uint8_t component) {
     }
     return table;
   }();
-  return kTable[component];
+  return kTable;
 }
 
 uint8_t Srgb8OfLinear(double linear) {

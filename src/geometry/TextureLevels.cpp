@@ -70,21 +70,22 @@ Rgb TextureLevels::Sample(double u, double v, int level) const {
   const double y = (1.0 - Wrap(v)) * h - 0.5;
   const double x0 = std::floor(x), y0 = std::floor(y);
   const double fx = x - x0, fy = y - y0;
-  const auto column = [w](double c) {
-    return static_cast<uint32_t>((static_cast<int64_t>(c) % w + w) % w);
+  // A texel index repeated into [0, size) (the modulo only off the image).
+  const auto repeated = [](double at, uint32_t size) {
+    const auto i = static_cast<int64_t>(at);
+    if (i >= 0 && i < int64_t{size}) return static_cast<uint32_t>(i);
+    return static_cast<uint32_t>((i % size + size) % size);
   };
-  const auto row = [h](double r) {
-    return static_cast<uint32_t>((static_cast<int64_t>(r) % h + h) % h);
-  };
-  const uint32_t xs[2] = {column(x0), column(x0 + 1)};
-  const uint32_t ys[2] = {row(y0), row(y0 + 1)};
+  const uint32_t xs[2] = {repeated(x0, w), repeated(x0 + 1, w)};
+  const uint32_t ys[2] = {repeated(y0, h), repeated(y0 + 1, h)};
   // Step 2: the four texels weighted in linear light.
+  const std::array<float, 256>& linear = LinearOfSrgb8Table();
   double sum[3] = {0, 0, 0};
   for (int j = 0; j < 2; ++j) {
     for (int i = 0; i < 2; ++i) {
       const double weight = (i == 0 ? 1.0 - fx : fx) * (j == 0 ? 1.0 - fy : fy);
       const uint8_t* texel = image.srgbTexels.data() + (size_t{ys[j]} * w + xs[i]) * 3;
-      for (int k = 0; k < 3; ++k) sum[k] += weight * LinearOfSrgb8(texel[k]);
+      for (int k = 0; k < 3; ++k) sum[k] += weight * linear[texel[k]];
     }
   }
   return Rgb{static_cast<float>(sum[0]), static_cast<float>(sum[1]), static_cast<float>(sum[2])};
