@@ -19,6 +19,7 @@
 #include "io/load/ExtrasBudget.h"
 #include "io/load/ModelExtensions.h"
 #include "io/load/ModelLoader.h"
+#include "io/write/AnsiCells.h"
 #include "io/write/AsciicastRecording.h"
 #include "io/write/FrameFormats.h"
 #include "io/write/OutputFile.h"
@@ -80,7 +81,7 @@ struct FrameSink {
   DepthBuffer centerDepth;
   CellBuffer centerCells;
   std::string text;
-  std::string ansi;                          ///< the ansi dump a picture is made from
+  AnsiCells ansiCells;                       ///< the frame a recording is made from
   std::optional<AsciicastRecording> record;  ///< --format asciicast: the recording
   std::optional<OutputFile> file;            ///< unset: standard output
 };
@@ -102,10 +103,9 @@ void AppendFrame(const Scene& scene, const Camera& camera, const RenderOptions& 
                    text);
   }
   if (format == FrameFormat::kAsciicast) {
-    sink.ansi.clear();
-    AppendAnsiFrame(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(),
-                    colourMode, sink.ansi, background);
-    sink.record->AppendFrame(sink.ansi, text);
+    FillAnsiCells(sink.cells, scene.source.faceColors, renderOptions.ramp.LevelCount(), colourMode,
+                  sink.ansiCells, background);
+    sink.record->AppendFrame(sink.ansiCells, text);
   }
   if (format != FrameFormat::kJson) return;
   if (sink.renderer.LastSampleGrid().Count() <= 1) {

@@ -38,6 +38,7 @@ replay() {  # replay CAST_BYTES COLS ROWS OUT
   tm new-session -d -s r -x "$2" -y "$3" "cat '$1'; sleep 30"
   sleep 0.5
   tm capture-pane -p -t r >"$4"
+  tm capture-pane -p -e -t r >"$4.ans"
   tm kill-server 2>/dev/null
 }
 
@@ -48,12 +49,18 @@ for case in "ramp none" "sextants truecolor" "quadrants 256" "braille 256"; do
   args=("$duck" --size 60x20 --glyphs "$glyphs" --color "$colour" --theta 0.2 --step 0.35)
   expect "${name}_renders" "$bin" render "${args[@]}" --frames 6 --fps 12.5 --format asciicast -o "$work/$name.cast"
   expect "${name}_is_asciicast_v2" bash -c "${readback[*]} cast '$work/$name.cast' 60 20 6 12.5 >'$work/$name.bytes'"
-  "$bin" render "${args[@]}" --frames 6 --format ansi | tail -n 20 | sed 's/\x1b\[[0-9;]*m//g; s/ *$//' >"$work/$name.last"
+  "$bin" render "${args[@]}" --frames 6 --format ansi | tail -n 20 >"$work/$name.last.ans"
+  sed 's/\x1b\[[0-9;]*m//g; s/ *$//' "$work/$name.last.ans" >"$work/$name.last"
   replay "$work/$name.bytes" 60 20 "$work/$name.screen"
   expect "${name}_replays_to_the_last_frame" diff "$work/$name.last" <(sed 's/ *$//' "$work/$name.screen")
+  # Later frames send only what changed: the colours must still be the last frame's.
+  expect "${name}_replays_the_last_frames_colours" /usr/bin/python3 "$src/tests/tmux/ansi_cells.py" \
+    "$work/$name.last.ans" "$work/$name.screen.ans" 20
 done
 expect cast_steady_rate "$bin" render "$src/data/cube.dat" --size 20x8 --frames 3 --format asciicast -o "$work/rate.cast"
 expect cast_default_fps_is_25 grep -q '^\[0.080000, "o"' "$work/rate.cast"
+# Frames that look the same: one event draws them, the close keeps the last one's time.
+expect cast_unchanged_frames_have_no_event bash -c "'$bin' render '$src/data/cube.dat' --size 20x8 --frames 3 --step 0 --format asciicast -o '$work/still.cast' && ${readback[*]} cast '$work/still.cast' 20 8 3 25 >/dev/null && [ \$(wc -l <'$work/still.cast') -eq 3 ]"
 expect cast_same_bytes_every_run bash -c "'$bin' render '$src/data/cube.dat' --size 20x8 --frames 3 --format asciicast | cmp -s - '$work/rate.cast'"
 
 # Step 2: SVG, rasterised at its own size (8 px wide cells, 16 px tall at aspect 2).

@@ -3,9 +3,10 @@
 
   read_back.py cast FILE.cast COLS ROWS FRAMES FPS
       The recording parses as asciicast v2: a header with the size and a
-      theme, then FRAMES output events at 1/FPS second steps and a closing
-      event; prints the bytes of every event in order (for a terminal to
-      replay).
+      theme, then an output event at 0 and one at each later frame's time
+      (FRAMES at 1/FPS second steps; a frame equal to the one before has
+      none) and a closing event at the last frame's time; prints the bytes
+      of every event in order (for a terminal to replay).
   read_back.py svg-cells PICTURE.png FRAME.ans CELL_W CELL_H
       The picture (an SVG rasterised by rsvg-convert, on the default black
       theme) shows the ansi dump's cells: for block, quadrant, sextant and
@@ -100,12 +101,17 @@ def CheckCast(path, cols, rows, frames, fps):
     if not theme.get("fg", "").startswith("#") or len(theme.get("palette", "").split(":")) != 16:
         Fail(f"theme {theme}")
     events = [json.loads(line) for line in lines[1:]]
-    if len(events) != frames + 1:
-        Fail(f"{len(events)} events, expected {frames} frames and a closing event")
-    for index, (seconds, kind, data) in enumerate(events[:frames]):
-        if kind != "o" or abs(seconds - index / fps) > 1e-6 or not isinstance(data, str):
+    if not 2 <= len(events) <= frames + 1:
+        Fail(f"{len(events)} events, expected at most {frames} frames and a closing event")
+    # A frame equal to the one before has no event: the others keep their frame's time.
+    last = -1
+    for index, (seconds, kind, data) in enumerate(events[:-1]):
+        frame = round(seconds * fps)
+        if (kind != "o" or abs(seconds - frame / fps) > 1e-6 or not isinstance(data, str) or
+                frame <= last or frame >= frames or (index == 0 and frame != 0)):
             Fail(f"event {index}: {seconds} {kind}")
-    if events[-1][0] != events[-2][0] or events[-1][2] != "\x1b[?25h":
+        last = frame
+    if abs(events[-1][0] - (frames - 1) / fps) > 1e-6 or events[-1][2] != "\x1b[?25h":
         Fail(f"closing event {events[-1]}")
     sys.stdout.write("".join(event[2] for event in events))
 

@@ -6,8 +6,8 @@
 #include <type_traits>
 
 #include "geometry/ViewingTransform.h"
+#include "io/write/AnsiCells.h"
 #include "shade/CellColour.h"
-#include "shade/Utf8.h"
 
 namespace termshade {
 namespace {
@@ -162,30 +162,9 @@ void AppendTextFrame(const CellBuffer& cells, std::string& out) {
 
 void AppendAnsiFrame(const CellBuffer& cells, std::span<const Rgb> faceColours, int levelCount,
                      ColourMode mode, std::string& out, Background background) {
-  CellColourMap colours(faceColours, levelCount, mode, background);
-  for (int row = 0; row < cells.HeightCells(); ++row) {
-    TermColour current, currentBack;  // the terminal's defaults until a cell sets one
-    for (int col = 0; col < cells.WidthCells(); ++col) {
-      const int level = cells.Level(col, row);
-      if (level >= 0 && mode != ColourMode::kNone) {  // a blank cell keeps the colour it has
-        const TermColour wanted =
-            colours.ForFace(cells.FaceNumber(col, row), level, cells.ForeAlbedo(col, row));
-        if (!(wanted == current)) AppendForegroundSgr(wanted, out);
-        current = wanted;
-      }
-      // Two-colour glyph modes give a background face; others keep the terminal's.
-      const int backLevel = cells.BackLevel(col, row);
-      const TermColour wantedBack = backLevel >= 0 && mode != ColourMode::kNone
-                                        ? colours.ForFace(cells.BackFaceNumber(col, row), backLevel,
-                                                          cells.BackAlbedo(col, row))
-                                        : TermColour{};
-      if (!(wantedBack == currentBack)) AppendBackgroundSgr(wantedBack, out);
-      currentBack = wantedBack;
-      AppendUtf8(out, cells.Glyph(col, row));
-    }
-    if (!(current == TermColour{}) || !(currentBack == TermColour{})) out += "\x1b[0m";
-    out += '\n';
-  }
+  AnsiCells ansiCells;
+  FillAnsiCells(cells, faceColours, levelCount, mode, ansiCells, background);
+  AppendAnsiRows(ansiCells, out);
 }
 
 void AppendJsonFrame(const CellBuffer& cells, const DepthBuffer& depth, const Scene& scene,
