@@ -246,13 +246,12 @@ int RunRenderCommand(const RenderCommandOptions& options) {
   renderOptions.method = *method;
   renderOptions.shade = *shade;
   renderOptions.ramp = ShadeRamp(options.ramp);
-  // Text and json have no colours; ansi and the pictures made from it do.
-  renderOptions.twoColour = *format == FrameFormat::kAnsi || *format == FrameFormat::kSvg ||
-                            *format == FrameFormat::kAsciicast;
-  renderOptions.glyphs = options.glyphs == "auto"
-                             ? AutoGlyphs(renderOptions.twoColour &&
-                                          ResolveColourMode(*colourMode) != ColourMode::kNone)
-                             : *glyphs;
+  // Text and json have no colours; ansi and the pictures made from it do,
+  // unless --color none asks for none (then their glyphs are the mono ones).
+  renderOptions.twoColour = (*format == FrameFormat::kAnsi || *format == FrameFormat::kSvg ||
+                             *format == FrameFormat::kAsciicast) &&
+                            ResolveColourMode(*colourMode) != ColourMode::kNone;
+  renderOptions.glyphs = options.glyphs == "auto" ? AutoGlyphs(renderOptions.twoColour) : *glyphs;
   renderOptions.cullBackFaces = !options.noCull;
   // (Textures colour cells: not a frame without colours.)
   renderOptions.textures =

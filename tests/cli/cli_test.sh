@@ -69,6 +69,12 @@ expect ansi_truecolor_has_24bit grep -q $'\x1b\\[38;2;' "$work/out"
 expect ansi_no_background bash -c "! grep -q '48;' '$work/out'"
 check ansi_color_none 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --color none
 expect ansi_color_none_is_text cmp -s "$work/out" "$work/plain"
+# Without colours the block modes' glyphs are the mono ones (shade glyphs,
+# dither), not two-colour patterns stripped of their colours: as text.
+check text_quadrants 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --size 50x16 --glyphs quadrants
+cp "$work/out" "$work/quadrants_text"
+check ansi_quadrants_color_none 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --glyphs quadrants --color none
+expect ansi_quadrants_color_none_is_text cmp -s "$work/out" "$work/quadrants_text"
 check ansi_mono 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --mono
 expect ansi_mono_is_text cmp -s "$work/out" "$work/plain"
 check ansi_auto_no_color 0 "" -- env NO_COLOR=1 COLORTERM=truecolor "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --color auto
