@@ -47,7 +47,7 @@ class GlyphStage {
   OrderedDither dither_{1};  ///< the plan's matrix when it dithers (rebuilt when the order changes)
   /// With plan.shadeGlyphs: the silhouette cells' glyphs (rebuilt when the mode or grid changes).
   std::optional<BlurredGlyphMatch> silhouette_;
-  int levelCount_ = 0;       ///< the ramp's level count levelOf_ is for
+  int levelCount_ = 0;                  ///< the ramp's level count levelOf_ is for
   std::array<int16_t, 256> levelOf_{};  ///< ramp level by intensity
   /// This frame's ascii glyph of a one-face cell by intensity; 0 unknown.
   std::array<char32_t, 256> uniformAscii_{};

@@ -56,8 +56,9 @@ BlurredGlyphMatch::BlurredGlyphMatch(GlyphMode mode, SampleGrid parts)
   std::array<size_t, kPx> partOf{};  // the part each pixel's centre lies in
   for (int i = 0; i < kPx; ++i) {
     const int x = i % kInkColumns, y = i / kInkColumns;
-    partOf[i] = static_cast<size_t>((y * parts.down / kInkRows) * parts.across +
-                                    x * parts.across / kInkColumns);
+    const int row = (2 * y + 1) * parts.down / (2 * kInkRows);
+    partOf[i] =
+        static_cast<size_t>(row * parts.across + (2 * x + 1) * parts.across / (2 * kInkColumns));
   }
   const InkMap blank{};
   for (char32_t glyph : glyphs_) {

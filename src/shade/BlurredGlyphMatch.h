@@ -30,8 +30,9 @@ class BlurredGlyphMatch {
   GlyphMode mode_;
   SampleGrid parts_;
   std::vector<char32_t> glyphs_;
-  std::vector<int64_t> self_;   ///< per glyph: sum over i, j of ink_i ink_j g(i - j)
-  std::vector<int64_t> cross_;  ///< per glyph and part: sum over i of ink_i, j in the part of g(i - j)
+  std::vector<int64_t> self_;  ///< per glyph: sum over i, j of ink_i ink_j g(i - j)
+  std::vector<int64_t>
+      cross_;  ///< per glyph and part: sum over i of ink_i, j in the part of g(i - j)
 };
 
 }  // namespace termshade

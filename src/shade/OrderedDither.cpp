@@ -36,7 +36,8 @@ uint8_t OrderedDither::RankThreshold(int rank, int ranks) {
   // luminance term 2ab / (a^2 + b^2) is equal for both. sqrt is exact in
   // IEEE arithmetic, so every compiler rounds it alike.
   if (rank == 0) return static_cast<uint8_t>(255 / (2 * ranks));
-  return static_cast<uint8_t>(std::lround(255.0 * std::sqrt(rank * (rank + 1.0)) / ranks));
+  const long mean = std::lround(255.0 * std::sqrt(rank * (rank + 1.0)) / ranks);
+  return static_cast<uint8_t>(std::min(mean, 254L));  // 255 inks every sample
 }
 
 SamplePattern OrderedDither::CellInk(const uint8_t* values, SamplePattern covered, SampleGrid grid,
