@@ -33,8 +33,8 @@ OrderedDither::OrderedDither(int order) {
 
 uint8_t OrderedDither::RankThreshold(int rank, int ranks) {
   // Between r and r + 1 inked of `ranks`: their geometric mean, where SSIM's
-  // luminance term 2ab / (a^2 + b^2) is equal for both. sqrt is exact in
-  // IEEE arithmetic, so every compiler rounds it alike.
+  // luminance term 2ab / (a^2 + b^2) is equal for both. sqrt is correctly
+  // rounded in IEEE arithmetic, so every compiler gets the same integers.
   if (rank == 0) return static_cast<uint8_t>(255 / (2 * ranks));
   const long mean = std::lround(255.0 * std::sqrt(rank * (rank + 1.0)) / ranks);
   return static_cast<uint8_t>(std::min(mean, 254L));  // 255 inks every sample
