@@ -58,10 +58,10 @@ TEST(Fidelity, EveryModeStaysAboveItsRecordedFloor) {
   const Floor floors[] = {
       {GlyphMode::kRamp, false, 0.47},      {GlyphMode::kRamp, true, 0.44},
       {GlyphMode::kAscii, false, 0.70},     {GlyphMode::kAscii, true, 0.75},
-      {GlyphMode::kBlocks, false, 0.51},    {GlyphMode::kBlocks, true, 0.91},
-      {GlyphMode::kQuadrants, false, 0.67}, {GlyphMode::kQuadrants, true, 0.93},
-      {GlyphMode::kSextants, false, 0.79},  {GlyphMode::kSextants, true, 0.95},
-      {GlyphMode::kBraille, false, 0.82},   {GlyphMode::kBraille, true, 0.95},
+      {GlyphMode::kBlocks, false, 0.82},    {GlyphMode::kBlocks, true, 0.91},
+      {GlyphMode::kQuadrants, false, 0.85}, {GlyphMode::kQuadrants, true, 0.93},
+      {GlyphMode::kSextants, false, 0.88},  {GlyphMode::kSextants, true, 0.95},
+      {GlyphMode::kBraille, false, 0.83},   {GlyphMode::kBraille, true, 0.95},
   };
   for (const Floor& floor : floors) {
     const Measured measured = MeasureMode(scene, floor.mode, floor.colour, 48, 16);

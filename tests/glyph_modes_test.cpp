@@ -13,6 +13,7 @@
 #include "raster/FramePlan.h"
 #include "raster/Renderer.h"
 #include "shade/BlockGlyphs.h"
+#include "shade/BlurredGlyphMatch.h"
 #include "shade/GlyphInk.h"
 #include "shade/OrderedDither.h"
 #include "shade/ShadeGlyph.h"
@@ -110,12 +111,13 @@ TEST(GlyphInkTables, SortedAndHoldingPrintableAscii) {
   }
 }
 
-// Without colour the pattern modes dither: a covered sample is inked where
-// its shade exceeds the screen-fixed threshold there, and a covered cell
-// keeps at least one sample (its lowest threshold's) inked. In blocks,
-// quadrants and sextants a cell whose samples are all covered is instead the
-// shade glyph of their mean shade.
-TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
+// Without colour braille dithers: a covered sample is inked where its shade
+// exceeds the screen-fixed threshold there, and a covered cell keeps at least
+// one sample (its lowest threshold's) inked. In blocks, quadrants and
+// sextants a cell whose samples are all covered is the shade glyph (a bar) of
+// their mean shade, and a silhouette cell the glyph nearest its samples after
+// a blur.
+TEST(GlyphModes, WithoutColourTheGlyphFollowsTheSamplesShades) {
   for (const std::string& name : GeneratedSceneNames()) {
     const Scene scene = test::LoadScene("data/" + name + ".dat");
     for (GlyphMode mode : kPatternModes) {
@@ -123,6 +125,7 @@ TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
       RenderOptions options;
       options.glyphs = mode;
       const OrderedDither dither(PlanGlyphs(options).ditherOrder);
+      const BlurredGlyphMatch matcher(mode, frame.grid);
       // The samples' shades: the one-sample frame at the sample camera (its faces are the
       // samples').
       RenderOptions single;
@@ -131,7 +134,7 @@ TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
       DepthBuffer fineDepth;
       fineDepth.Resize(fine.WidthCells(), fine.HeightCells());
       Renderer().Render(scene, SampleCamera(frame.camera, frame.grid), single, fineDepth, fine);
-      int partlyInked = 0, shaded = 0;
+      int partlyInked = 0, shaded = 0, matched = 0;
       const SamplePattern all = (SamplePattern{1} << frame.grid.Count()) - 1;
       for (int row = 0; row < 20; ++row) {
         for (int col = 0; col < 60; ++col) {
@@ -153,6 +156,13 @@ TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
             ++shaded;
             continue;
           }
+          if (mode != GlyphMode::kBraille) {
+            if (covered == 0) continue;
+            ASSERT_EQ(frame.cells.Glyph(col, row), matcher.Nearest(values.data()))
+                << name << " " << GlyphModeName(mode) << " cell " << col << "," << row;
+            ++matched;
+            continue;
+          }
           const SamplePattern shown = PatternOfGlyph(frame.cells.Glyph(col, row), frame.grid);
           ASSERT_EQ(shown, dither.CellInk(values.data(), covered, frame.grid, col, row))
               << name << " " << GlyphModeName(mode) << " cell " << col << "," << row;
@@ -161,9 +171,9 @@ TEST(GlyphModes, WithoutColourTheGlyphIsTheDitheredCoverage) {
           partlyInked += shown != covered ? 1 : 0;
         }
       }
-      // (A half block's silhouette cell has one covered sample, always inked.)
-      EXPECT_EQ(partlyInked > 0, mode != GlyphMode::kBlocks) << name << " " << GlyphModeName(mode);
+      EXPECT_EQ(partlyInked > 0, mode == GlyphMode::kBraille) << name << " " << GlyphModeName(mode);
       EXPECT_EQ(shaded > 0, mode != GlyphMode::kBraille) << name << " " << GlyphModeName(mode);
+      EXPECT_EQ(matched > 0, mode != GlyphMode::kBraille) << name << " " << GlyphModeName(mode);
     }
   }
 }

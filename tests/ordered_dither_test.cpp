@@ -3,6 +3,7 @@
 // thresholds, and a covered cell is never blank.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <set>
@@ -11,6 +12,7 @@
 
 #include "raster/FramePlan.h"
 #include "raster/GlyphStage.h"
+#include "shade/BlurredGlyphMatch.h"
 #include "shade/OrderedDither.h"
 
 namespace termshade {
@@ -32,10 +34,13 @@ TEST(OrderedDither, EveryLevelInksItsShareOfEveryTile) {
     const int tile = dither.Side() * dither.Side();
     int previous = 0;
     for (int v = 0; v < 256; ++v) {
+      int below = 0;  // ranks whose threshold v exceeds
+      for (int r = 0; r < tile; ++r) below += v > OrderedDither::RankThreshold(r, tile) ? 1 : 0;
       // Any tile-sized window of the repeating pattern holds each threshold once.
       for (const auto& [x0, y0] : {std::pair{0, 0}, std::pair{3, 5}, std::pair{17, 2}}) {
         const int inked = InkedInTile(dither, v, x0, y0);
-        ASSERT_LE(std::abs(inked - v * tile / 255.0), 0.5) << "order " << order << " v " << v;
+        ASSERT_EQ(inked, below) << "order " << order << " v " << v;
+        ASSERT_LE(std::abs(inked - v * tile / 255.0), 1.0) << "order " << order << " v " << v;
         ASSERT_GE(inked, previous);
         if (x0 == 0) previous = inked;
       }
@@ -43,6 +48,36 @@ TEST(OrderedDither, EveryLevelInksItsShareOfEveryTile) {
     EXPECT_EQ(InkedInTile(dither, 0, 0, 0), 0);
     EXPECT_EQ(InkedInTile(dither, 255, 0, 0), tile);
   }
+}
+
+// Between r and r + 1 quarters inked the bound is their geometric mean, where
+// SSIM's luminance term is the same for both; the first at half a quarter.
+TEST(OrderedDither, TwoByTwoThresholdsAreGeometricMeans) {
+  EXPECT_EQ(OrderedDither::RankThreshold(0, 4), 31);
+  EXPECT_EQ(OrderedDither::RankThreshold(1, 4), 90);   // 255 sqrt(2) / 4 = 90.2
+  EXPECT_EQ(OrderedDither::RankThreshold(2, 4), 156);  // 255 sqrt(6) / 4 = 156.2
+  EXPECT_EQ(OrderedDither::RankThreshold(3, 4), 221);  // 255 sqrt(12) / 4 = 220.8
+  const OrderedDither dither(1);
+  EXPECT_EQ(dither.Threshold(0, 0), 31);
+  EXPECT_EQ(dither.Threshold(1, 1), 90);
+  EXPECT_EQ(dither.Threshold(1, 0), 156);
+  EXPECT_EQ(dither.Threshold(0, 1), 221);
+}
+
+// A dark braille cell inks one dot: the top tile's in even columns and the
+// bottom tile's in odd ones, so the dots fall on a diagonal lattice.
+TEST(OrderedDither, TheDarkestDotAlternatesTilesByColumn) {
+  const OrderedDither dither(1);
+  const std::vector<uint8_t> dark(8, 10);
+  for (int col = 0; col < 4; ++col) {
+    for (int row = 0; row < 3; ++row) {
+      const SamplePattern ink = dither.CellInk(dark.data(), 0xFF, {2, 4}, col, row);
+      EXPECT_EQ(ink, col % 2 == 0 ? 0x01U : 0x10U) << col << "," << row;
+    }
+  }
+  // With one of the two covered, that one whatever the column.
+  EXPECT_EQ(dither.CellInk(dark.data(), 0x0F, {2, 4}, 1, 0), 0x01U);
+  EXPECT_EQ(dither.CellInk(dark.data(), 0xF0, {2, 4}, 0, 0), 0x10U);
 }
 
 TEST(OrderedDither, ThresholdsDependOnTheScreenPositionAlone) {
@@ -118,7 +153,7 @@ int InkedSamples(GlyphMode mode, char32_t glyph) {
   return -1;
 }
 
-TEST(GlyphStageMono, HalfShadeIsACheckerboardOrMediumShade) {
+TEST(GlyphStageMono, HalfShadeIsACheckerboardOrAHalfBlock) {
   for (GlyphMode mode : kPatternModes) {
     const CellBuffer cells = MonoFrame(mode, 128);
     const int perCell = ModeSampleGrid(mode).Count();
@@ -127,8 +162,8 @@ TEST(GlyphStageMono, HalfShadeIsACheckerboardOrMediumShade) {
         if (mode == GlyphMode::kBraille) {  // half the dots, in a checkerboard
           ASSERT_EQ(InkedSamples(mode, cells.Glyph(col, row)), perCell / 2) << col << "," << row;
           ASSERT_EQ(cells.Glyph(col, row), U'\u2895');  // dots 1, 3, 5, 8
-        } else {  // a covered cell of the block modes: medium shade
-          ASSERT_EQ(cells.Glyph(col, row), U'\u2592') << GlyphModeName(mode);
+        } else {  // a covered cell of the block modes: the left half block
+          ASSERT_EQ(cells.Glyph(col, row), U'\u258C') << GlyphModeName(mode);
         }
       }
     }
@@ -136,9 +171,12 @@ TEST(GlyphStageMono, HalfShadeIsACheckerboardOrMediumShade) {
 }
 
 TEST(GlyphStageMono, CoveredBlockCellsAreTheNearestShadeGlyph) {
-  const std::pair<int, char32_t> expected[] = {{0, U'\u2591'},   {95, U'\u2591'},  {96, U'\u2592'},
-                                               {159, U'\u2592'}, {160, U'\u2593'}, {223, U'\u2593'},
-                                               {224, U'\u2588'}, {255, U'\u2588'}};
+  // Left bars of 1..7 eighths and the full block, at integer geometric-mean bounds.
+  const std::pair<int, char32_t> expected[] = {
+      {0, U'\u258F'},   {44, U'\u258F'},  {45, U'\u258E'},  {77, U'\u258E'},
+      {78, U'\u258D'},  {109, U'\u258D'}, {110, U'\u258C'}, {142, U'\u258C'},
+      {143, U'\u258B'}, {174, U'\u258B'}, {175, U'\u258A'}, {206, U'\u258A'},
+      {207, U'\u2589'}, {238, U'\u2589'}, {239, U'\u2588'}, {255, U'\u2588'}};
   for (GlyphMode mode : {GlyphMode::kBlocks, GlyphMode::kQuadrants, GlyphMode::kSextants}) {
     for (const auto& [intensity, glyph] : expected) {
       const CellBuffer cells = MonoFrame(mode, static_cast<uint8_t>(intensity));
@@ -167,9 +205,9 @@ TEST(GlyphStageMono, FullBrailleIsAllDotsAndNoShadeOneDot) {
   }
 }
 
-// A silhouette cell (some samples background) stays a dithered pattern of
-// its covered samples, never blank and never a shade glyph.
-TEST(GlyphStageMono, SilhouetteCellsStayDithered) {
+// A silhouette cell (some samples background) is a dithered pattern of its
+// covered samples in braille, the matcher's glyph in the block modes; never blank.
+TEST(GlyphStageMono, SilhouetteCellsAreDitheredOrMatched) {
   for (GlyphMode mode : kPatternModes) {
     for (int v : {0, 128, 255}) {
       RenderOptions options;
@@ -187,7 +225,13 @@ TEST(GlyphStageMono, SilhouetteCellsStayDithered) {
       depth.Resize(1, 1);
       GlyphStage stage;
       stage.Compose({frame, intensities}, plan, cells, depth);
-      EXPECT_EQ(cells.Glyph(0, 0), PatternGlyph(mode, 1)) << GlyphModeName(mode) << " " << v;
+      std::array<uint8_t, 8> values{};
+      values[0] = static_cast<uint8_t>(v);
+      const char32_t expected = mode == GlyphMode::kBraille
+                                    ? PatternGlyph(mode, 1)
+                                    : BlurredGlyphMatch(mode, plan.pattern).Nearest(values.data());
+      EXPECT_EQ(cells.Glyph(0, 0), expected) << GlyphModeName(mode) << " " << v;
+      EXPECT_NE(cells.Glyph(0, 0), U' ') << GlyphModeName(mode) << " " << v;
     }
   }
 }

@@ -13,9 +13,9 @@ namespace {
 // docs/glyphs-and-fidelity.md#shade-without-colour-ordered-dither).
 constexpr int kMonoDitherOrder = 1;
 
-// The mono modes whose covered cells are shade glyphs: not braille, whose
-// dots ink about a quarter of the cell at most (a light shade would outshine
-// a full braille cell).
+// The mono modes whose covered cells are bars and silhouette cells matched
+// glyphs: not braille, whose dots ink about a quarter of the cell at most (a
+// bar would outshine a full braille cell).
 bool ShadesWithGlyphs(const RenderOptions& options) {
   const GlyphMode mode = options.glyphs;
   return !options.twoColour && (mode == GlyphMode::kBlocks || mode == GlyphMode::kQuadrants ||

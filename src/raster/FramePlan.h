@@ -76,13 +76,14 @@ struct GlyphPlan {
   bool twoColour = false;           ///< see RenderOptions::twoColour
   const ShadeRamp* ramp = nullptr;  ///< the options'
   SampleGrid pattern;               ///< the glyph's parts; the frame's grid is a multiple of it
-  /// Without colour, the block modes and braille ink a part when its shade
-  /// exceeds the threshold of a Bayer matrix of side 2^ditherOrder at its
-  /// screen position (OrderedDither); 0: every covered part is inked.
+  /// Without colour, the pattern modes ink a part when its shade exceeds the
+  /// threshold of a Bayer matrix of side 2^ditherOrder at its screen position
+  /// (OrderedDither), unless shadeGlyphs; 0: every covered part is inked.
   int ditherOrder = 0;
   /// Without colour (blocks, quadrants, sextants), a cell whose parts are all
-  /// covered is the shade glyph of its covered parts' mean shade (ShadeGlyph)
-  /// instead of a dithered pattern; cells on the silhouette stay dithered.
+  /// covered is the bar of its covered parts' mean shade (ShadeGlyph) and a
+  /// cell on the silhouette the glyph nearest its parts after a blur
+  /// (BlurredGlyphMatch), instead of a dithered pattern.
   bool shadeGlyphs = false;
   bool writeDepth = true;  ///< a cell's depth is its nearest sample's
 };

@@ -8,6 +8,7 @@
 #endif
 
 #include "shade/BlockGlyphs.h"
+#include "shade/BlurredGlyphMatch.h"
 #include "shade/ShadeGlyph.h"
 
 namespace termshade {
@@ -233,19 +234,25 @@ void FillBackground(CellBuffer& cells) {
 }
 
 // The glyph and tones of a cell whose samples (or parts) show more than one face.
-// Where a cell is, for the ordered dither's screen-fixed thresholds.
+// Where a cell is, for the ordered dither's screen-fixed thresholds, and the
+// silhouette cells' matcher (with plan.shadeGlyphs).
 struct CellPlace {
   const OrderedDither& dither;
+  const BlurredGlyphMatch* silhouette = nullptr;
   int col = 0;
   int row = 0;
 };
 
 // The glyph of a pattern mode without colour: the ordered dither of the
 // covered samples' (or parts') shades; with plan.shadeGlyphs, a cell every
-// part of which is covered shows the shade glyph of its mean shade instead.
+// part of which is covered shows the shade glyph of its mean shade instead,
+// and a cell with background parts the glyph nearest its parts after a blur.
 char32_t DitheredGlyph(const CellSamples& s, const GlyphPlan& plan, const CellPlace& place,
                        uint8_t meanShade) {
-  if (plan.shadeGlyphs && s.covered == LowBits(plan.pattern.Count())) return ShadeGlyph(meanShade);
+  if (plan.shadeGlyphs) {
+    if (s.covered == LowBits(plan.pattern.Count())) return ShadeGlyph(meanShade);
+    return place.silhouette->Nearest(s.values.data());
+  }
   return PatternGlyph(plan.mode, place.dither.CellInk(s.values.data(), s.covered, plan.pattern,
                                                       place.col, place.row));
 }
@@ -294,6 +301,10 @@ void GlyphStage::Compose(const Samples& in, const GlyphPlan& plan, CellBuffer& c
   }
   if (plan.ditherOrder != 0 && dither_.Side() != 1 << plan.ditherOrder) {
     dither_ = OrderedDither(plan.ditherOrder);
+  }
+  if (plan.shadeGlyphs && (!silhouette_ || silhouette_->Mode() != plan.mode ||
+                           !(silhouette_->Parts() == plan.pattern))) {
+    silhouette_.emplace(plan.mode, plan.pattern);
   }
   uniformAscii_.fill(0);  // ascii glyphs of one-face cells, by intensity, filled as met
   FillBackground(cells);
@@ -347,7 +358,8 @@ void GlyphStage::ComposeGrid(const Samples& in, const GlyphPlan& plan, CellBuffe
     // Step 2: the glyph and its colours; a cell of one face has one tone (a full block).
     Tone fore, back;
     char32_t glyph = U' ';
-    const CellPlace place{dither_, static_cast<int>(index % widthCells),
+    const CellPlace place{dither_, plan.shadeGlyphs ? &*silhouette_ : nullptr,
+                          static_cast<int>(index % widthCells),
                           static_cast<int>(index / widthCells)};
     if (oneFace) {
       fore = {firstFace, fine.values[0]};

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "raster/CellBuffer.h"
@@ -9,6 +10,7 @@
 #include "raster/FramePlan.h"
 #include "raster/SampleFrame.h"
 #include "shade/AsciiMatcher.h"
+#include "shade/BlurredGlyphMatch.h"
 #include "shade/OrderedDither.h"
 
 namespace termshade {
@@ -19,8 +21,11 @@ namespace termshade {
 /// Keeps the ascii matcher's cache and the ramp's level table between frames.
 /// Cells no sample reaches are filled as background at once; a cell whose
 /// samples show one face takes its tone without a split or a match. Without
-/// colour, the pattern modes' glyphs are the ordered dither of the covered
-/// samples' shades (plan.ditherOrder), their tones those of the covered samples.
+/// colour, braille's glyphs are the ordered dither of the covered samples'
+/// shades (plan.ditherOrder); blocks', quadrants' and sextants' a bar of the
+/// cell's mean shade where every part is covered (ShadeGlyph), else the glyph
+/// nearest the parts after a blur (BlurredGlyphMatch); their tones are those
+/// of the covered samples.
 class GlyphStage {
  public:
   /// A frame of samples (faces and depth per sample, the grid) and the
@@ -40,7 +45,9 @@ class GlyphStage {
 
   AsciiMatcher ascii_;
   OrderedDither dither_{1};  ///< the plan's matrix when it dithers (rebuilt when the order changes)
-  int levelCount_ = 0;       ///< the ramp's level count levelOf_ is for
+  /// With plan.shadeGlyphs: the silhouette cells' glyphs (rebuilt when the mode or grid changes).
+  std::optional<BlurredGlyphMatch> silhouette_;
+  int levelCount_ = 0;                  ///< the ramp's level count levelOf_ is for
   std::array<int16_t, 256> levelOf_{};  ///< ramp level by intensity
   /// This frame's ascii glyph of a one-face cell by intensity; 0 unknown.
   std::array<char32_t, 256> uniformAscii_{};

@@ -1,6 +1,7 @@
 #include "shade/OrderedDither.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace termshade {
@@ -22,16 +23,21 @@ OrderedDither::OrderedDither(int order) {
       }
     }
   }
-  // Rank r's threshold: floor((r + 1/2) 255 / side^2), so 0 inks nothing and
-  // 255 everything, and a shade v exceeds round(v side^2 / 255) of them (ties down).
-  const int cells = side_ * side_;
   for (int y = 0; y < side_; ++y) {
     for (int x = 0; x < side_; ++x) {
-      const int r = rank[static_cast<size_t>(y * kMaxSide + x)];
       thresholds_[static_cast<size_t>(y * kMaxSide + x)] =
-          static_cast<uint8_t>(((2 * r + 1) * 255) / (2 * cells));
+          RankThreshold(rank[static_cast<size_t>(y * kMaxSide + x)], side_ * side_);
     }
   }
+}
+
+uint8_t OrderedDither::RankThreshold(int rank, int ranks) {
+  // Between r and r + 1 inked of `ranks`: their geometric mean, where SSIM's
+  // luminance term 2ab / (a^2 + b^2) is equal for both. sqrt is correctly
+  // rounded in IEEE arithmetic, so every compiler gets the same integers.
+  if (rank == 0) return static_cast<uint8_t>(255 / (2 * ranks));
+  const long mean = std::lround(255.0 * std::sqrt(rank * (rank + 1.0)) / ranks);
+  return static_cast<uint8_t>(std::min(mean, 254L));  // 255 inks every sample
 }
 
 SamplePattern OrderedDither::CellInk(const uint8_t* values, SamplePattern covered, SampleGrid grid,
@@ -47,7 +53,9 @@ SamplePattern OrderedDither::CellInk(const uint8_t* values, SamplePattern covere
       if (((covered >> n) & 1U) == 0) continue;
       const int threshold = Threshold(x0 + i, y0 + j);
       ink |= static_cast<SamplePattern>(values[n] > threshold) << n;
-      if (threshold < lowest) {
+      // Of equal lowest thresholds (braille's two tiles), the first in even
+      // columns and the last in odd ones: a diagonal lattice of dots.
+      if (threshold < lowest || (threshold == lowest && (col & 1) != 0)) {
         lowest = threshold;
         lowestSample = n;
       }

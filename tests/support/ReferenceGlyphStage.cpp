@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <vector>
 
 #include "shade/BlockGlyphs.h"
+#include "shade/BlurredGlyphMatch.h"
 #include "shade/OrderedDither.h"
 #include "shade/ShadeGlyph.h"
 
@@ -178,12 +180,25 @@ SamplePattern DitheredInk(const CellSamples& s, SampleGrid pattern, const Ordere
     const int x = col * pattern.across + n % pattern.across;
     const int y = row * pattern.down + n / pattern.across;
     if (dither.Inks(s.values[n], x, y)) ink |= SamplePattern{1} << n;
-    if (dither.Threshold(x, y) < lowestThreshold) {
+    // Of equal lowest thresholds, the first in even columns, the last in odd ones.
+    if (dither.Threshold(x, y) < lowestThreshold ||
+        (dither.Threshold(x, y) == lowestThreshold && col % 2 == 1)) {
       lowestThreshold = dither.Threshold(x, y);
       lowest = SamplePattern{1} << n;
     }
   }
   return ink != 0 ? ink : lowest;
+}
+
+// A silhouette cell's glyph without colour (blocks, quadrants, sextants): the
+// matcher's, one kept per mode and grid.
+char32_t SilhouetteGlyph(const CellSamples& s, GlyphMode mode, SampleGrid pattern) {
+  static std::vector<BlurredGlyphMatch> matchers;
+  for (const BlurredGlyphMatch& m : matchers) {
+    if (m.Mode() == mode && m.Parts() == pattern) return m.Nearest(s.values.data());
+  }
+  matchers.emplace_back(mode, pattern);
+  return matchers.back().Nearest(s.values.data());
 }
 
 // The rounded mean shade of the covered samples (or parts).
@@ -289,7 +304,10 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan
           const OrderedDither dither(plan.ditherOrder);
           glyph = PatternGlyph(mode, DitheredInk(s, plan.pattern, dither, col, row));
         }
-        if (plan.shadeGlyphs && s.covered == all) glyph = ShadeGlyph(MeanOfCovered(s));
+        if (plan.shadeGlyphs) {
+          glyph = s.covered == all ? ShadeGlyph(MeanOfCovered(s))
+                                   : SilhouetteGlyph(s, mode, plan.pattern);
+        }
         break;
     }
     cells.Glyphs()[index] = glyph;
