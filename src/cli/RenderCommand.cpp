@@ -252,6 +252,7 @@ int RunRenderCommand(const RenderCommandOptions& options) {
                              *format == FrameFormat::kAsciicast) &&
                             ResolveColourMode(*colourMode) != ColourMode::kNone;
   renderOptions.glyphs = options.glyphs == "auto" ? AutoGlyphs(renderOptions.twoColour) : *glyphs;
+  renderOptions.background = *background;
   renderOptions.cullBackFaces = !options.noCull;
   // (Textures colour cells: not a frame without colours.)
   renderOptions.textures =

@@ -229,7 +229,8 @@ void AddLookOptions(CLI::App& command, RenderCommandOptions& options) {
   command
       .add_option("--background", options.background,
                   "the terminal's background the shades are made for: dark or light (render: "
-                  "dark; viewer: the terminal's answer (OSC 11), else COLORFGBG, else dark)")
+                  "dark; viewer: the terminal's answer (OSC 11), else COLORFGBG, else dark); "
+                  "without colour, on light the ink follows each face's darkness")
       ->check(CLI::IsMember({"dark", "light"}));
   command
       .add_option("--lod", options.lod,

@@ -163,7 +163,8 @@ FramePlan PlanFrame(const Scene& scene, const Camera& camera, const RenderOption
                   .ramp = &options.ramp,
                   .sunEye = options.sunEye,
                   .ambient = options.ambient,
-                  .lines = plan.method == Method::kWire};
+                  .lines = plan.method == Method::kWire,
+                  .darkInk = !options.twoColour && options.background == Background::kLight};
   if (sampled) plan.glyphs = PlanGlyphs(options);
   plan.textures = options.textures && options.twoColour && scene.textures.Colour() &&
                   plan.method != Method::kWire;

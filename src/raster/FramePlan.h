@@ -68,6 +68,9 @@ struct ShadePlan {
   Vec3 sunEye = DefaultSunEye();
   double ambient = kDefaultAmbient;
   bool lines = false;  ///< wire: the cells hold lines, drawn at full intensity
+  /// Ink darker than the background (no colours on a light one): each face's
+  /// intensity and level are its darkness, 1 - its shade (lines stay full).
+  bool darkInk = false;
 };
 
 /// How a frame of several samples a cell becomes glyphs (SPEC 11).

@@ -7,6 +7,7 @@
 
 #include "geometry/Vec3.h"
 #include "raster/TriangleRasterizer.h"
+#include "shade/Background.h"
 #include "shade/GlyphMode.h"
 #include "shade/Lighting.h"
 #include "shade/ShadeRamp.h"
@@ -80,6 +81,10 @@ struct RenderOptions {
   /// sample by sample (TextureStage), where colours are shown (twoColour);
   /// false: their face colour.
   bool textures = true;
+  /// The terminal's background. Without colours (twoColour false) ink is the
+  /// terminal's foreground: on a light background it is dark, so a face's
+  /// ink follows its darkness instead of its brightness (no negative image).
+  Background background = Background::kDark;
   /// False: the depth buffer need not hold the frame's depth afterwards (only
   /// the json dump reads it), so methods that need no depth test skip it.
   bool keepDepth = true;

@@ -166,10 +166,10 @@ void ShadeStage::ShadeSeenFaces(const Scene& scene, const ShadeView& view, const
   const ShadeRamp& ramp = *plan.ramp;
   ForRanges(pool, count, [&](int, size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
-      const double intensity =
-          plan.mode == ShadeMode::kContrast
-              ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, plan.ambient)
-              : LambertIntensity(seenSunDots_[i], plan.ambient);
+      const double shade = plan.mode == ShadeMode::kContrast
+                               ? ContrastIntensity(seenSunDots_[i], minDot, maxDot, plan.ambient)
+                               : LambertIntensity(seenSunDots_[i], plan.ambient);
+      const double intensity = plan.darkInk ? 1.0 - shade : shade;
       if (levels) {
         faceLevels_[seenFaces_[i]] = static_cast<int16_t>(ramp.LevelFor(intensity));
       }

@@ -701,6 +701,7 @@ class EventLoop {
     // With colour, the cells as the ansi dump draws them (one cell buffer,
     // many outputs): fg and bg in the block modes, shape-matched ascii.
     frameOptions_.twoColour = state_.Colour() != ColourMode::kNone;
+    frameOptions_.background = state_.Background();
     const Camera camera = state_.CameraFor(cols, frameRows);
     const DetailPick pick =
         PickDetail(state_.Levels(), state_.CurrentScene(), camera, frameOptions_);

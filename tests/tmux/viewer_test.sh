@@ -119,8 +119,20 @@ mouse() {  # mouse BUTTON-CODE COL ROW (0-based cells)
   tm send-keys -t v -l "$(printf "$report")"
 }
 
-# 1. The first screen is the headless render of the same view and size.
 start_shell 80 25
+# Without colour on a light background the ink follows each face's
+# darkness (no negative): the screen is render's with --background light.
+run "$bin --color none --background light --glyphs quadrants"
+wait_for '\? help' 5 >/dev/null || fail "the light mono viewer did not start"
+frame_matches_render light_mono_matches_render 24 "$src/data/sphere_cone.dat" --size 80x24 --background light
+screen | head -n 24 >"$work/light.txt"
+"$bin" render "$src/data/sphere_cone.dat" --size 80x24 --fit --glyphs quadrants | sed 's/[[:space:]]*$//' >"$work/dark.txt"
+sed -i 's/[[:space:]]*$//' "$work/light.txt"
+cmp -s "$work/light.txt" "$work/dark.txt" && fail "light_mono_differs_from_dark" || pass
+tm send-keys -t v q
+wait_for '^\$ ?$' 5 >/dev/null
+
+# 1. The first screen is the headless render of the same view and size.
 run "$bin"
 wait_for '\? help' 5 >/dev/null || fail "demo did not start"
 frame_matches_render first_screen_is_render 24 "$src/data/sphere_cone.dat" --size 80x24
