@@ -15,7 +15,8 @@ struct GlyphShape {
 };
 
 /// The shape of a glyph that PatternGlyph makes (blocks, quadrants, sextants,
-/// braille); null for any other character, a text glyph. Lives as long as the program.
+/// braille) or of an eighth block (U+2581..2587, U+2589..258F, U+2594,
+/// U+2595); null for any other character, a text glyph. Lives as long as the program.
 const GlyphShape* ShapeOfGlyph(char32_t glyph);
 
 }  // namespace termshade

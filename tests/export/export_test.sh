@@ -64,7 +64,7 @@ expect cast_unchanged_frames_have_no_event bash -c "'$bin' render '$src/data/cub
 expect cast_same_bytes_every_run bash -c "'$bin' render '$src/data/cube.dat' --size 20x8 --frames 3 --format asciicast | cmp -s - '$work/rate.cast'"
 
 # Step 2: SVG, rasterised at its own size (8 px wide cells, 16 px tall at aspect 2).
-for case in "ramp none" "ascii 256" "blocks truecolor" "quadrants 256" "sextants truecolor" "braille none"; do
+for case in "ramp none" "ascii 256" "blocks truecolor" "quadrants 256" "sextants truecolor" "braille none" "quadrants none" "sextants none"; do
   set -- $case
   name="svg_${1}_$2"
   args=("$duck" --size 50x16 --glyphs "$1" --color "$2" --theta 0.9)
