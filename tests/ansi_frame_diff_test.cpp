@@ -370,5 +370,49 @@ TEST(AnsiFrameDiff, EqualFramesNothingOneCellAMoveAndShortGapsSentAgain) {
   EXPECT_EQ(out, "\x1b[2;3H\x1b[38;5;200m#  \x1b[0m%\x1b[3;12H@");
 }
 
+// A frame of glyph `glyph` in colour `index` everywhere.
+AnsiCells FilledFrame(int width, int height, char32_t glyph, int index) {
+  AnsiCells frame;
+  frame.Resize(width, height);
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) frame.At(col, row) = {glyph, Indexed(index), {}};
+  }
+  return frame;
+}
+
+TEST(AnsiFrameDiff, AFrameOfAnotherSizeClearsTheScreenFirst) {
+  const AnsiCells big = FilledFrame(30, 4, U'#', 3), small = FilledFrame(20, 3, U'.', 5);
+  TerminalModel screen = WholeFrameScreen(big);
+  std::string bytes;
+  AppendAnsiFrameDiff(big, small, bytes);
+  EXPECT_EQ(bytes.rfind("\x1b[2J", 0), 0U) << "the screen is cleared first";
+  screen.Feed(bytes);
+  for (int row = 0; row < 4; ++row) {
+    for (int col = 0; col < 30; ++col) {
+      const AnsiCell& cell = screen.Cells()[static_cast<size_t>(row) * 30 + col];
+      const bool inside = col < 20 && row < 3;
+      EXPECT_EQ(cell.glyph, inside ? U'.' : U' ') << col << "," << row;
+    }
+  }
+}
+
+TEST(AsciicastRecording, AFrameOfAnotherSizeLeavesNothingOfTheLast) {
+  AsciicastRecording recording(30, 4, 1.0);
+  std::string out;
+  recording.AppendFrame(FilledFrame(30, 4, U'#', 3), out);
+  recording.AppendFrame(FilledFrame(20, 3, U'#', 3), out);
+  std::istringstream lines(out);
+  std::string header, firstEvent, secondEvent;
+  std::getline(lines, header);
+  std::getline(lines, firstEvent);
+  std::getline(lines, secondEvent);
+  TerminalModel screen(30, 4);
+  screen.Feed(nlohmann::json::parse(firstEvent)[2].get<std::string>());
+  screen.Feed(nlohmann::json::parse(secondEvent)[2].get<std::string>());
+  EXPECT_EQ(screen.Cells()[29].glyph, U' ') << "the first row's end is cleared";
+  EXPECT_EQ(screen.Cells()[3 * 30].glyph, U' ') << "the last row is cleared";
+  EXPECT_EQ(screen.Cells()[0].glyph, U'#');
+}
+
 }  // namespace
 }  // namespace termshade

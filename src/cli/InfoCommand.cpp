@@ -11,7 +11,7 @@
 #include "io/load/ModelLoader.h"
 #include "io/load/TextureReferences.h"
 #include "io/read/LoadError.h"
-#include "io/write/AsciicastRecording.h"
+#include "io/write/JsonText.h"
 
 namespace termshade {
 namespace {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "io/write/AsciicastRecording.h"
+#include "io/write/JsonText.h"
 
 namespace termshade {
 namespace {

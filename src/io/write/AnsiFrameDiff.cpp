@@ -1,7 +1,7 @@
 #include "io/write/AnsiFrameDiff.h"
 
-#include "io/write/AsciicastRecording.h"
 #include "io/write/FrameFormats.h"
+#include "io/write/JsonText.h"
 #include "shade/Utf8.h"
 
 namespace termshade {
@@ -80,15 +80,15 @@ int NextChange(const AnsiCells& previous, const AnsiCells& next, int row, int co
   return col;
 }
 
-// A cursor move costs at most 12 bytes and a pen change a 33-byte SGR (as
-// JSON text, 22 and 38): a longer gap of at least a byte a cell is never
-// cheaper to send.
-constexpr int kLongestGapWorthSending = 64;
+// A cursor move costs at most 12 bytes and a pen change a 36-byte SGR (as
+// JSON text, 17 and 41): a longer gap, at least a byte a cell, never costs
+// less to send again.
+constexpr int kLongestGapCells = 64;
 
 // Whether sending the unchanged cells [from, to) and the changed cell at `to`
 // is no longer than moving to `to` and sending that cell.
 bool GapCheaper(const AnsiCells& cells, int row, int from, int to, const Pen& pen) {
-  if (to - from > kLongestGapWorthSending) return false;
+  if (to - from > kLongestGapCells) return false;
   std::string through, jump;
   Pen throughPen = pen, jumpPen = pen;
   AppendCells(cells, row, from, to + 1, throughPen, through);
@@ -117,6 +117,13 @@ void AppendRowChanges(const AnsiCells& previous, const AnsiCells& next, int row,
 }  // namespace
 
 void AppendAnsiFrameDiff(const AnsiCells& previous, const AnsiCells& next, std::string& out) {
+  if (previous.WidthCells() != next.WidthCells() || previous.HeightCells() != next.HeightCells()) {
+    // Another size: the screen cleared, then every cell that is not blank.
+    AnsiCells cleared;
+    cleared.Resize(next.WidthCells(), next.HeightCells());
+    out += "\x1b[2J";
+    return AppendAnsiFrameDiff(cleared, next, out);
+  }
   Pen pen;
   for (int row = 0; row < next.HeightCells(); ++row)
     AppendRowChanges(previous, next, row, pen, out);

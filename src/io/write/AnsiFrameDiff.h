@@ -14,7 +14,8 @@ namespace termshade {
 /// than a move. Starts and ends in the terminal's default colours, as a
 /// whole frame's rows do, so the screen then looks exactly as `next` drawn
 /// whole does (only the invisible foreground of a blank may differ).
-/// Nothing when the frames look the same.
+/// Nothing when the frames look the same; frames of different sizes: the
+/// screen cleared (ED 2), then `next` against blank cells.
 void AppendAnsiFrameDiff(const AnsiCells& previous, const AnsiCells& next, std::string& out);
 
 }  // namespace termshade

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "io/write/AnsiFrameDiff.h"
+#include "io/write/JsonText.h"
 
 namespace termshade {
 namespace {
@@ -29,33 +30,6 @@ void AppendWholeFrame(const AnsiCells& frame, std::string& out) {
 
 }  // namespace
 
-void AppendJsonText(std::string_view text, std::string& out) {
-  out += '"';
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (byte < 0x20 || byte == 0x7F) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", byte);
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  out += '"';
-}
-
-size_t JsonTextLength(std::string_view text) {
-  size_t length = 0;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    length += c == '"' || c == '\\' ? 2 : byte < 0x20 || byte == 0x7F ? 6 : 1;
-  }
-  return length;
-}
-
 AsciicastRecording::AsciicastRecording(int widthCells, int heightCells, double framesPerSecond,
                                        const TerminalTheme& theme)
     : widthCells_(widthCells),
@@ -78,9 +52,13 @@ void AsciicastRecording::AppendHeader(std::string& out) const {
 void AsciicastRecording::AppendFrame(const AnsiCells& frame, std::string& out) {
   // Step 1: the header, before the first frame.
   std::string bytes;
+  const bool sameSize = previous_.WidthCells() == frame.WidthCells() &&
+                        previous_.HeightCells() == frame.HeightCells();
   if (framesWritten_ == 0) {
     AppendHeader(out);
     bytes = "\x1b[?25l\x1b[2J";
+  } else if (!sameSize) {
+    bytes = "\x1b[2J";  // a frame of another size: nothing of the last may stay
   }
   // Step 2: the whole frame from the top left, rows joined by CR LF; no line
   // feed after the last row, so a terminal of the frame's height never scrolls.
@@ -88,8 +66,6 @@ void AsciicastRecording::AppendFrame(const AnsiCells& frame, std::string& out) {
   AppendWholeFrame(frame, bytes);
   // Step 3: after the first, only what changed, where that is shorter; an
   // unchanged frame has no event (the next one keeps its own time).
-  const bool sameSize = previous_.WidthCells() == frame.WidthCells() &&
-                        previous_.HeightCells() == frame.HeightCells();
   if (framesWritten_ > 0 && sameSize) {
     std::string changes;
     AppendAnsiFrameDiff(previous_, frame, changes);

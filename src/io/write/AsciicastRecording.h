@@ -1,7 +1,6 @@
 #pragma once
 
 #include <string>
-#include <string_view>
 
 #include "io/write/AnsiCells.h"
 #include "shade/TerminalTheme.h"
@@ -38,11 +37,5 @@ class AsciicastRecording {
   long framesWritten_ = 0;
   AnsiCells previous_;  ///< the frame the terminal shows
 };
-
-/// text as a JSON string (quotes, backslashes and control bytes escaped;
-/// UTF-8 passed through).
-void AppendJsonText(std::string_view text, std::string& out);
-/// The bytes AppendJsonText makes of text, less the two quotes.
-size_t JsonTextLength(std::string_view text);
 
 }  // namespace termshade

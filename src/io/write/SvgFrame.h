@@ -19,7 +19,7 @@ struct SvgFrameStyle {
   double cellAspect = 2.0;  ///< cell height / cell width
   ColourMode colourMode = ColourMode::k256;
   Background background = Background::kDark;  ///< the shades' background (CellColour)
-  TerminalTheme theme;                         ///< ThemeFor(background) as a rule
+  TerminalTheme theme;                        ///< ThemeFor(background) as a rule
 };
 
 /// The frame as one standalone SVG document, drawn as a terminal shows the
