@@ -177,6 +177,10 @@ TEST(GlyphStageMono, CoveredBlockCellsAreTheNearestShadeGlyph) {
       {78, U'\u258D'},  {109, U'\u258D'}, {110, U'\u258C'}, {142, U'\u258C'},
       {143, U'\u258B'}, {174, U'\u258B'}, {175, U'\u258A'}, {206, U'\u258A'},
       {207, U'\u2589'}, {238, U'\u2589'}, {239, U'\u2588'}, {255, U'\u2588'}};
+  // The bounds are the dither's rank thresholds of 8 (its geometric means).
+  for (int k = 1; k <= 7; ++k) {
+    EXPECT_EQ(expected[2 * k].first, OrderedDither::RankThreshold(k, 8)) << k;
+  }
   for (GlyphMode mode : {GlyphMode::kBlocks, GlyphMode::kQuadrants, GlyphMode::kSextants}) {
     for (const auto& [intensity, glyph] : expected) {
       const CellBuffer cells = MonoFrame(mode, static_cast<uint8_t>(intensity));

@@ -23,9 +23,9 @@ class OrderedDither {
   explicit OrderedDither(int order);
 
   int Side() const { return side_; }
-  /// The threshold 0..254 at sample (x, y), x and y >= 0 (the pattern repeats).
-  /// The threshold of rank `rank` of `ranks`.
+  /// The threshold of rank `rank` of `ranks` (ranks >= 1, 0 <= rank < ranks).
   static uint8_t RankThreshold(int rank, int ranks);
+  /// The threshold 0..254 at sample (x, y), x and y >= 0 (the pattern repeats).
   uint8_t Threshold(int x, int y) const {
     return thresholds_[static_cast<size_t>((y & mask_) * kMaxSide + (x & mask_))];
   }

@@ -190,17 +190,6 @@ SamplePattern DitheredInk(const CellSamples& s, SampleGrid pattern, const Ordere
   return ink != 0 ? ink : lowest;
 }
 
-// A silhouette cell's glyph without colour (blocks, quadrants, sextants): the
-// matcher's, one kept per mode and grid.
-char32_t SilhouetteGlyph(const CellSamples& s, GlyphMode mode, SampleGrid pattern) {
-  static std::vector<BlurredGlyphMatch> matchers;
-  for (const BlurredGlyphMatch& m : matchers) {
-    if (m.Mode() == mode && m.Parts() == pattern) return m.Nearest(s.values.data());
-  }
-  matchers.emplace_back(mode, pattern);
-  return matchers.back().Nearest(s.values.data());
-}
-
 // The rounded mean shade of the covered samples (or parts).
 uint8_t MeanOfCovered(const CellSamples& s) {
   int sum = 0, count = 0;
@@ -213,6 +202,13 @@ uint8_t MeanOfCovered(const CellSamples& s) {
 }
 
 }  // namespace
+
+const BlurredGlyphMatch& ReferenceGlyphStage::Silhouette(GlyphMode mode, SampleGrid parts) {
+  if (!silhouette_ || silhouette_->Mode() != mode || !(silhouette_->Parts() == parts)) {
+    silhouette_.emplace(mode, parts);
+  }
+  return *silhouette_;
+}
 
 void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan& plan,
                                   CellBuffer& cells, DepthBuffer& depth) {
@@ -306,7 +302,7 @@ void ReferenceGlyphStage::Compose(const GlyphStage::Samples& in, const GlyphPlan
         }
         if (plan.shadeGlyphs) {
           glyph = s.covered == all ? ShadeGlyph(MeanOfCovered(s))
-                                   : SilhouetteGlyph(s, mode, plan.pattern);
+                                   : Silhouette(mode, plan.pattern).Nearest(s.values.data());
         }
         break;
     }

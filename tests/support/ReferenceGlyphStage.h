@@ -1,10 +1,13 @@
 #pragma once
 
+#include <optional>
+
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
 #include "raster/FramePlan.h"
 #include "raster/GlyphStage.h"
 #include "shade/AsciiMatcher.h"
+#include "shade/BlurredGlyphMatch.h"
 
 namespace termshade {
 
@@ -17,7 +20,12 @@ class ReferenceGlyphStage {
                DepthBuffer& depth);
 
  private:
+  /// The silhouette matcher (blocks, quadrants, sextants without colour) for
+  /// a mode and grid, kept until another is asked for.
+  const BlurredGlyphMatch& Silhouette(GlyphMode mode, SampleGrid parts);
+
   AsciiMatcher ascii_;
+  std::optional<BlurredGlyphMatch> silhouette_;
 };
 
 }  // namespace termshade
