@@ -63,7 +63,7 @@ TEST(Cancel, ASetFlagStopsThePreparationWithNothing) {
 // just measured; the build must then give nothing (the old preparation, which
 // did not look, ran to its end). How soon it stops is printed, not asserted:
 // timings belong to the benchmarks (docs/reliability.md has them).
-TEST(Cancel, PrepareSceneStopsSoonAfterTheFlag) {
+TEST(Cancel, PrepareSceneFlaggedMidwayGivesNothing) {
   const Mesh mesh = GenerateTriangleSphere(kBigTriangles);
   auto start = Clock::now();
   const Scene whole = PrepareScene(mesh);
@@ -80,7 +80,7 @@ TEST(Cancel, PrepareSceneStopsSoonAfterTheFlag) {
 
 // The issue's own shape: one face of millions of corners over 4 vertices,
 // one triangulation call (the flag is looked at between its ears).
-TEST(Cancel, PrepareSceneStopsInsideOneHugeFace) {
+TEST(Cancel, PrepareSceneFlaggedInsideOneHugeFaceGivesNothing) {
   Mesh mesh;
   mesh.verticesFile = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   constexpr uint32_t kCorners = 3000000;
@@ -100,7 +100,7 @@ TEST(Cancel, PrepareSceneStopsInsideOneHugeFace) {
   EXPECT_FALSE(cancelled.has_value());
 }
 
-TEST(Cancel, BuildRayBvhStopsSoonAfterTheFlagWithAnEmptyHierarchy) {
+TEST(Cancel, BuildRayBvhFlaggedMidwayGivesAnEmptyHierarchy) {
   const Scene scene = PrepareScene(GenerateTriangleSphere(kBigTriangles));
   auto start = Clock::now();
   const RayBvh whole = BuildRayBvh(scene);

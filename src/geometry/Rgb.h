@@ -13,9 +13,12 @@ inline bool operator==(Rgb a, Rgb b) {
   return a.r == b.r && a.g == b.g && a.b == b.b;
 }
 
-/// Relative luminance of a linear colour (ITU-R BT.709 weights).
+/// Relative luminance of linear components (ITU-R BT.709 weights).
+inline double LinearLuminance(double r, double g, double b) {
+  return 0.2126 * r + 0.7152 * g + 0.0722 * b;
+}
 inline double LinearLuminance(Rgb c) {
-  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+  return LinearLuminance(c.r, c.g, c.b);
 }
 
 }  // namespace termshade

@@ -17,7 +17,7 @@ struct Linear {
 };
 
 double LuminanceOf(const Linear& c) {
-  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+  return LinearLuminance(c.r, c.g, c.b);
 }
 
 // Squared distance of two sRGB colours, weighted by how the eye tells them

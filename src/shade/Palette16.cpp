@@ -4,17 +4,14 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/SrgbCoding.h"
+
 namespace termshade {
 namespace {
 
 struct Lab {
   double l, a, b;
 };
-
-double Linearize(uint8_t value) {
-  const double c = value / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
 
 double LabCurve(double t) {
   constexpr double kDelta = 6.0 / 29.0;
@@ -23,7 +20,8 @@ double LabCurve(double t) {
 
 // sRGB to CIELAB (D65 white).
 Lab ToLab(Srgb8 colour) {
-  const double r = Linearize(colour.r), g = Linearize(colour.g), b = Linearize(colour.b);
+  const double r = LinearOfSrgb8Exact(colour.r), g = LinearOfSrgb8Exact(colour.g),
+               b = LinearOfSrgb8Exact(colour.b);
   const double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
   const double y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
   const double z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
