@@ -22,14 +22,6 @@
 namespace termshade {
 namespace {
 
-// An entry of the 256-colour palette.
-TermColour Indexed(int index) {
-  TermColour colour;
-  colour.kind = TermColour::Kind::kIndexed;
-  colour.index = static_cast<uint8_t>(index);
-  return colour;
-}
-
 // A small terminal: CUP, CR, LF, SGR (kept per cell), ED 2, DECTCEM, and
 // UTF-8 glyphs one cell each. Anything else, a glyph past the right edge
 // (auto-wrap) or a line feed off the bottom (scrolling) fails the test:
@@ -119,7 +111,7 @@ class TerminalModel {
   // One colour after 38 or 48: 5;n or 2;r;g;b; the index after it.
   static size_t Extended(const std::vector<int>& p, size_t i, TermColour& colour) {
     if (i + 1 < p.size() && p[i] == 5) {
-      colour = Indexed(p[i + 1]);
+      colour = test::IndexedColour(p[i + 1]);
       return i + 2;
     }
     if (i + 3 < p.size() && p[i] == 2) {
@@ -140,13 +132,13 @@ class TerminalModel {
       if (n == 0) {
         pen_ = AnsiCell{};
       } else if (n >= 30 && n <= 37) {
-        pen_.foreground = Indexed(n - 30);
+        pen_.foreground = test::IndexedColour(n - 30);
       } else if (n >= 90 && n <= 97) {
-        pen_.foreground = Indexed(n - 90 + 8);
+        pen_.foreground = test::IndexedColour(n - 90 + 8);
       } else if (n >= 40 && n <= 47) {
-        pen_.background = Indexed(n - 40);
+        pen_.background = test::IndexedColour(n - 40);
       } else if (n >= 100 && n <= 107) {
-        pen_.background = Indexed(n - 100 + 8);
+        pen_.background = test::IndexedColour(n - 100 + 8);
       } else if (n == 39) {
         pen_.foreground = {};
       } else if (n == 49) {
@@ -326,17 +318,17 @@ TEST(AnsiFrameDiff, ReplayGivesEachFramesScreenForMadeUpFrames) {
           case 0:
             break;
           case 1:
-            cell.foreground = Indexed(k % 16);
+            cell.foreground = test::IndexedColour(k % 16);
             break;
           case 2:
-            cell.foreground = Indexed(16 + k % 200);
+            cell.foreground = test::IndexedColour(16 + k % 200);
             break;
           case 3:
             cell.foreground.kind = TermColour::Kind::kRgb;
             cell.foreground.rgb = {static_cast<uint8_t>(k), 40, static_cast<uint8_t>(f)};
             break;
           default:
-            cell.background = Indexed(k % 8);
+            cell.background = test::IndexedColour(k % 8);
             break;
         }
       }
@@ -354,7 +346,7 @@ TEST(AnsiFrameDiff, EqualFramesNothingOneCellAMoveAndShortGapsSentAgain) {
   EXPECT_EQ(out, "");
   AnsiCells after = before;
   after.At(2, 1).glyph = U'#';
-  after.At(2, 1).foreground = Indexed(200);
+  after.At(2, 1).foreground = test::IndexedColour(200);
   AppendAnsiFrameDiff(before, after, out);
   EXPECT_EQ(out, "\x1b[2;3H\x1b[38;5;200m#\x1b[0m");
   // Two unchanged cells between changes cost less than a move: sent again
@@ -375,7 +367,8 @@ AnsiCells FilledFrame(int width, int height, char32_t glyph, int index) {
   AnsiCells frame;
   frame.Resize(width, height);
   for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) frame.At(col, row) = {glyph, Indexed(index), {}};
+    for (int col = 0; col < width; ++col)
+      frame.At(col, row) = {glyph, test::IndexedColour(index), {}};
   }
   return frame;
 }

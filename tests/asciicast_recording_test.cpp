@@ -10,17 +10,10 @@
 
 #include "io/write/AsciicastRecording.h"
 #include "shade/Utf8.h"
+#include "support/TestSupport.h"
 
 namespace termshade {
 namespace {
-
-// An entry of the 256-colour palette.
-TermColour Indexed(int index) {
-  TermColour colour;
-  colour.kind = TermColour::Kind::kIndexed;
-  colour.index = static_cast<uint8_t>(index);
-  return colour;
-}
 
 std::vector<nlohmann::json> Lines(const std::string& text) {
   std::vector<nlohmann::json> lines;
@@ -46,7 +39,7 @@ TEST(AsciicastRecording, HeaderThenOneEventPerFrameAtTheRate) {
   AsciicastRecording recording(3, 2, 20.0);
   std::string out;
   AnsiCells first = Cells({"abc", "d\"\\"});
-  first.At(2, 0).foreground = Indexed(21);
+  first.At(2, 0).foreground = test::IndexedColour(21);
   recording.AppendFrame(first, out);
   recording.AppendFrame(Cells({"xyz", "uvw"}), out);
   recording.AppendEnd(out);
@@ -75,7 +68,7 @@ TEST(AsciicastRecording, LaterFramesSendOnlyWhatChangedAndUnchangedOnesNothing) 
       Cells({"....................", "....................", "...................."});
   AnsiCells second = first;
   second.At(4, 1).glyph = U'\u2588';
-  second.At(4, 1).foreground = Indexed(9);
+  second.At(4, 1).foreground = test::IndexedColour(9);
   recording.AppendFrame(first, out);
   recording.AppendFrame(second, out);
   recording.AppendFrame(second, out);  // unchanged: no event

@@ -127,4 +127,11 @@ std::string ReadResultText(std::optional<Loaded<Mesh>> read) {
   return text;
 }
 
+TermColour IndexedColour(int index) {
+  TermColour colour;
+  colour.kind = TermColour::Kind::kIndexed;
+  colour.index = static_cast<uint8_t>(index);
+  return colour;
+}
+
 }  // namespace termshade::test

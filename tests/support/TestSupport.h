@@ -11,6 +11,7 @@
 #include "raster/CellBuffer.h"
 #include "raster/DepthBuffer.h"
 #include "raster/RenderOptions.h"
+#include "shade/CellColour.h"
 
 namespace termshade::test {
 
@@ -40,6 +41,9 @@ Mesh LoadMesh(const std::string& relative);
 
 /// Loads and prepares a model from the source tree; fails the test on error.
 Scene LoadScene(const std::string& relative);
+
+/// An entry of the 256-colour palette as a terminal colour.
+TermColour IndexedColour(int index);
 
 /// One four-cornered face per quad, each with its own vertices.
 Mesh QuadMesh(const std::vector<std::array<Vec3, 4>>& quads);
