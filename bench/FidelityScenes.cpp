@@ -125,7 +125,9 @@ void AddLoaded(std::vector<NamedScene>& scenes, const std::string& name, const s
 std::vector<NamedScene> FidelityScenes(const std::string& dataDirectory) {
   std::vector<NamedScene> scenes;
   for (const std::string& name : GeneratedSceneNames()) {
-    AddLoaded(scenes, name, dataDirectory + "/" + name + ".dat");
+    std::string path = dataDirectory;
+    path.append("/").append(name).append(".dat");
+    AddLoaded(scenes, name, path);
   }
   scenes.push_back({"torus knot 19k", PrepareScene(TorusKnot())});
   scenes.push_back({"checker globe", PrepareScene(CheckerGlobe())});
