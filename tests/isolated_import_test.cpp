@@ -240,6 +240,29 @@ TEST(ImportWire, ACountBeyondTheLimitIsRefusedBeforeAllocating) {
   EXPECT_EQ(reader.Problem(), "an array longer than allowed");
 }
 
+// What the reader says of a mesh's answer (empty: accepted).
+std::string WireRefusal(const Mesh& mesh) {
+  std::string wire;
+  const WireSink sink = [&](const void* from, size_t size) {
+    wire.append(static_cast<const char*>(from), size);
+    return true;
+  };
+  EXPECT_TRUE(WriteResultFrame(ModuleStatus::kDone, "", mesh, sink));
+  size_t at = 1;
+  WireReader reader(
+      [&](void* to, size_t size) {
+        if (at + size > wire.size()) return false;
+        std::memcpy(to, wire.data() + at, size);
+        at += size;
+        return true;
+      },
+      wire.size());
+  ModuleStatus status{};
+  std::string text;
+  Loaded<Mesh> read = LoadError{};
+  return ReadResultFrame(reader, status, text, read) ? std::string() : reader.Problem();
+}
+
 TEST(ImportWire, TextureNamesBeyondTheLimitsAreRefused) {
   const auto refusal = [](const std::vector<std::string>& textures) {
     Mesh mesh;
@@ -247,25 +270,7 @@ TEST(ImportWire, TextureNamesBeyondTheLimitsAreRefused) {
     const uint32_t face[] = {0, 1, 2};
     mesh.AddFace(face);
     mesh.textures = textures;
-    std::string wire;
-    const WireSink sink = [&](const void* from, size_t size) {
-      wire.append(static_cast<const char*>(from), size);
-      return true;
-    };
-    EXPECT_TRUE(WriteResultFrame(ModuleStatus::kDone, "", mesh, sink));
-    size_t at = 1;
-    WireReader reader(
-        [&](void* to, size_t size) {
-          if (at + size > wire.size()) return false;
-          std::memcpy(to, wire.data() + at, size);
-          at += size;
-          return true;
-        },
-        wire.size());
-    ModuleStatus status{};
-    std::string text;
-    Loaded<Mesh> read = LoadError{};
-    return ReadResultFrame(reader, status, text, read) ? std::string() : reader.Problem();
+    return WireRefusal(mesh);
   };
   EXPECT_EQ(refusal({"wood.png"}), "");
   EXPECT_EQ(refusal({std::string("a.png\0/../../x", 14)}), "a texture name with a NUL byte");
@@ -309,35 +314,6 @@ TEST(ImportWire, MeshesThatNoLoaderMakesAreNamed) {
   EXPECT_EQ(MeshWireProblem(colours), "face colours not one a face");
 }
 
-}  // namespace
-}  // namespace termshade
-
-namespace termshade {
-namespace {
-
-// What the reader says of a textured mesh's answer (empty: accepted).
-std::string TexturedWireRefusal(const Mesh& mesh) {
-  std::string wire;
-  const WireSink sink = [&](const void* from, size_t size) {
-    wire.append(static_cast<const char*>(from), size);
-    return true;
-  };
-  EXPECT_TRUE(WriteResultFrame(ModuleStatus::kDone, "", mesh, sink));
-  size_t at = 1;
-  WireReader reader(
-      [&](void* to, size_t size) {
-        if (at + size > wire.size()) return false;
-        std::memcpy(to, wire.data() + at, size);
-        at += size;
-        return true;
-      },
-      wire.size());
-  ModuleStatus status{};
-  std::string text;
-  Loaded<Mesh> read = LoadError{};
-  return ReadResultFrame(reader, status, text, read) ? std::string() : reader.Problem();
-}
-
 TEST(ImportWire, TexturedMeshesOutOfShapeAreRefused) {
   Mesh mesh;
   mesh.verticesFile = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -347,27 +323,26 @@ TEST(ImportWire, TexturedMeshesOutOfShapeAreRefused) {
   mesh.textureImages = {TextureImage{2, 1, {1, 2, 3, 4, 5, 6}, "", ""}};
   mesh.faceTextures = {0};
   mesh.cornerUvs = {{0, 0}, {1, 0}, {0, 1}};
-  EXPECT_EQ(TexturedWireRefusal(mesh), "");
+  EXPECT_EQ(WireRefusal(mesh), "");
   Mesh unfilled = mesh;
   unfilled.textureImages[0].srgbTexels.pop_back();
-  EXPECT_EQ(TexturedWireRefusal(unfilled), "a texture image whose texels do not fill it");
+  EXPECT_EQ(WireRefusal(unfilled), "a texture image whose texels do not fill it");
   Mesh large = mesh;
   large.textureImages[0] = TextureImage{kMaxTextureSideTexels + 1, 1, {}, "", ""};
   large.textureImages[0].srgbTexels.resize(size_t{kMaxTextureSideTexels + 1} * 3);
-  EXPECT_EQ(TexturedWireRefusal(large), "a texture image larger than allowed");
+  EXPECT_EQ(WireRefusal(large), "a texture image larger than allowed");
   Mesh extraImage = mesh;
   extraImage.textureImages.push_back(mesh.textureImages[0]);
-  EXPECT_EQ(TexturedWireRefusal(extraImage), "texture images not one a name");
+  EXPECT_EQ(WireRefusal(extraImage), "texture images not one a name");
   Mesh pastNames = mesh;
   pastNames.faceTextures = {1};
-  EXPECT_EQ(TexturedWireRefusal(pastNames), "a face texture past the names");
+  EXPECT_EQ(WireRefusal(pastNames), "a face texture past the names");
   Mesh shortUvs = mesh;
   shortUvs.cornerUvs.pop_back();
-  EXPECT_EQ(TexturedWireRefusal(shortUvs),
-            "texture coordinates not one a corner of a textured mesh");
+  EXPECT_EQ(WireRefusal(shortUvs), "texture coordinates not one a corner of a textured mesh");
   Mesh faces = mesh;
   faces.faceTextures = {0, 0};
-  EXPECT_EQ(TexturedWireRefusal(faces), "face textures not one a face");
+  EXPECT_EQ(WireRefusal(faces), "face textures not one a face");
 }
 
 }  // namespace
