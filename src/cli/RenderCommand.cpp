@@ -252,7 +252,8 @@ int RunRenderCommand(const RenderCommandOptions& options) {
                              *format == FrameFormat::kAsciicast) &&
                             ResolveColourMode(*colourMode) != ColourMode::kNone;
   renderOptions.glyphs = options.glyphs == "auto" ? AutoGlyphs(renderOptions.twoColour) : *glyphs;
-  renderOptions.background = *background;
+  // (json reports SPEC's intensities, not ink: never turned for a light background.)
+  renderOptions.background = *format == FrameFormat::kJson ? Background::kDark : *background;
   renderOptions.cullBackFaces = !options.noCull;
   // (Textures colour cells: not a frame without colours.)
   renderOptions.textures =

@@ -78,6 +78,7 @@ expect ansi_quadrants_color_none_is_text cmp -s "$work/out" "$work/quadrants_tex
 # On a light background mono ink is dark: the frame follows darkness (not a negative).
 check text_light_background 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --size 50x16 --glyphs quadrants --background light
 expect text_light_background_differs bash -c "! cmp -s '$work/out' '$work/quadrants_text'"
+expect json_ignores_light_background bash -c "'$bin' render '$src/data/sphere_cone.dat' --size 30x10 --format json --background light | cmp -s - <('$bin' render '$src/data/sphere_cone.dat' --size 30x10 --format json)"
 check ansi_mono 0 "" -- "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --mono
 expect ansi_mono_is_text cmp -s "$work/out" "$work/plain"
 check ansi_auto_no_color 0 "" -- env NO_COLOR=1 COLORTERM=truecolor "$bin" render "$src/data/sphere_cone.dat" --format ansi --size 50x16 --color auto
